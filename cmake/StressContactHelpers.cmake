@@ -1,0 +1,101 @@
+# Helpers shared by all StressContact packages, apps and tests.
+#
+#   sc_add_package(<name> SOURCES ... [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
+#     Library target sc_<name> (alias StressContact::<name>, exported as StressContact::<name>),
+#     headers under packages/<name>/src/sc/<name>/ included as <sc/<name>/X.hpp>.
+#
+#   sc_add_test(<name> SOURCES ... | COMMAND ...  [LIBS ...] [MPI_RANKS 1 2 4] [ARGS ...]
+#               [WILL_FAIL] [PASS_REGULAR_EXPRESSION re] [LABELS ...] [TIMEOUT s])
+#     One CTest per rank count, named <name>_np<N>, run through mpiexec (DUNE's dune_add_test).
+#     Without MPI_RANKS the test runs once, serially, under its plain name.
+
+set(SC_MPIEXEC_EXTRA_FLAGS "--oversubscribe")
+execute_process(COMMAND id -u OUTPUT_VARIABLE _sc_uid OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+if(_sc_uid STREQUAL "0")
+  list(APPEND SC_MPIEXEC_EXTRA_FLAGS "--allow-run-as-root")
+endif()
+
+function(sc_add_package name)
+  cmake_parse_arguments(P "" "" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  set(tgt sc_${name})
+  add_library(${tgt} ${P_SOURCES})
+  add_library(StressContact::${name} ALIAS ${tgt})
+  set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME stresscontact_${name}
+                                          VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR})
+  target_include_directories(${tgt} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/src>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_compile_options(${tgt} PRIVATE -Wall -Wextra)
+  target_link_libraries(${tgt} PUBLIC ${P_PUBLIC_LIBS} PRIVATE ${P_PRIVATE_LIBS})
+  install(TARGETS ${tgt} EXPORT StressContactTargets
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/src/sc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+          FILES_MATCHING PATTERN "*.hpp")
+  set_property(GLOBAL APPEND PROPERTY SC_PACKAGES ${name})
+endfunction()
+
+function(sc_add_test name)
+  cmake_parse_arguments(T "WILL_FAIL;UNIT_TEST" "PASS_REGULAR_EXPRESSION;TIMEOUT;WORKING_DIRECTORY"
+                        "SOURCES;COMMAND;LIBS;MPI_RANKS;ARGS;LABELS;FAIL_REGULAR_EXPRESSION" ${ARGN})
+  if(T_SOURCES)
+    add_executable(${name} ${T_SOURCES})
+    target_link_libraries(${name} PRIVATE ${T_LIBS})
+    if(T_UNIT_TEST)
+      target_link_libraries(${name} PRIVATE sc_unit_test_main)
+    endif()
+    set(cmd $<TARGET_FILE:${name}>)
+  else()
+    set(cmd ${T_COMMAND})
+  endif()
+  if(T_UNIT_TEST)
+    list(APPEND T_LABELS unit)
+  endif()
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 300)
+  endif()
+  if(NOT T_WORKING_DIRECTORY)
+    set(T_WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  endif()
+  if(T_MPI_RANKS)
+    set(runs ${T_MPI_RANKS})
+  else()
+    set(runs 0)
+  endif()
+  foreach(np IN LISTS runs)
+    if(np EQUAL 0)
+      set(tname ${name})
+      set(full ${cmd} ${T_ARGS})
+      set(procs 1)
+    else()
+      set(tname ${name}_np${np})
+      set(full ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} ${SC_MPIEXEC_EXTRA_FLAGS}
+               ${cmd} ${T_ARGS})
+      set(procs ${np})
+    endif()
+    string(REPLACE "@NP@" "${np}" full "${full}")
+    add_test(NAME ${tname} COMMAND ${full} WORKING_DIRECTORY ${T_WORKING_DIRECTORY})
+    # Oversubscribed ranks on a 2-core machine: PROCESSORS keeps ctest -j from stacking them.
+    set_tests_properties(${tname} PROPERTIES PROCESSORS ${procs} TIMEOUT ${T_TIMEOUT}
+                         SKIP_RETURN_CODE 77 ENVIRONMENT "OMPI_MCA_rmaps_base_oversubscribe=1")
+    if(T_WILL_FAIL)
+      set_tests_properties(${tname} PROPERTIES WILL_FAIL TRUE)
+    endif()
+    if(T_PASS_REGULAR_EXPRESSION)
+      set_tests_properties(${tname} PROPERTIES PASS_REGULAR_EXPRESSION "${T_PASS_REGULAR_EXPRESSION}")
+    endif()
+    if(T_FAIL_REGULAR_EXPRESSION)
+      set_tests_properties(${tname} PROPERTIES FAIL_REGULAR_EXPRESSION "${T_FAIL_REGULAR_EXPRESSION}")
+    endif()
+    if(T_LABELS)
+      set_tests_properties(${tname} PROPERTIES LABELS "${T_LABELS}")
+    endif()
+  endforeach()
+endfunction()
+
+#   sc_add_unit_test(<name> SOURCES ... LIBS ... [MPI_RANKS ...])
+#     A Teuchos unit-test executable (shared main in packages/core/test/UnitTestMain.cpp).
+function(sc_add_unit_test name)
+  sc_add_test(${name} UNIT_TEST ${ARGN})
+endfunction()

@@ -1,0 +1,320 @@
+#include "sc/core/ProblemData.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <sstream>
+
+#include "sc/core/Error.hpp"
+#include "sc/core/Parameters.hpp"
+
+namespace sc::core {
+namespace {
+
+std::vector<double> toVector(const Teuchos::Array<double>& a) { return {a.begin(), a.end()}; }
+
+std::string joined(const std::vector<std::string>& names)
+{
+  std::ostringstream os;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    os << (i ? ", " : "") << "'" << names[i] << "'";
+  return os.str();
+}
+
+}  // namespace
+
+// ----------------------------------------------------------------------------- Problem
+Teuchos::RCP<const Teuchos::ParameterList> ProblemSettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Problem"));
+    declareInt(*pl, "Dimension", 2, "Space dimension: 2 (plane strain) or 3.", 2, 3);
+    declareString(*pl, "Name", "", "Free-text name of the study, copied to summary.json.");
+    return pl;
+  }();
+  return valid;
+}
+
+ProblemSettings ProblemSettings::fromParameters(const Teuchos::ParameterList& pl)
+{
+  ProblemSettings s;
+  s.dimension = pl.get<int>("Dimension");
+  return s;
+}
+
+// ----------------------------------------------------------------------------- Material
+Teuchos::RCP<const Teuchos::ParameterList> Material::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Material"));
+    declareReal(*pl, "Young modulus", 1.0, "Young's modulus E (> 0), in the deck's stress units.",
+                0.0, true, kInfinity, false);
+    declareReal(*pl, "Poisson ratio", 0.3,
+                "Poisson's ratio ν in [0, 0.5]; 0.5 (incompressible) is valid: the method never "
+                "forms λ (DESIGN §1).",
+                0.0, false, 0.5, false);
+    return pl;
+  }();
+  return valid;
+}
+
+Material Material::fromParameters(const Teuchos::ParameterList& pl)
+{
+  Material m;
+  m.youngModulus = pl.get<double>("Young modulus");
+  m.poissonRatio = pl.get<double>("Poisson ratio");
+  return m;
+}
+
+// ----------------------------------------------------------------------------- Boundary conditions
+std::string toString(BoundaryType type)
+{
+  switch (type) {
+  case BoundaryType::Displacement: return "Displacement";
+  case BoundaryType::Traction: return "Traction";
+  case BoundaryType::Contact: return "Contact";
+  case BoundaryType::Free: return "Free";
+  }
+  return "?";
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Boundary Conditions"));
+    Teuchos::ParameterList& t =
+        pl->sublist(kTemplateSublist, false,
+                    "One sublist per boundary part, named as the mesh names it (e.g. 'Top', "
+                    "'Arc'). Parts not listed are traction-free.");
+    declareChoice(t, "Type", "Free", {"Displacement", "Traction", "Contact", "Free"},
+                  "Displacement: u = Value (natural in the stress formulation); Traction: σn = "
+                  "Value (essential); Contact: unilateral contact with the Contact/Obstacle; "
+                  "Free: σn = 0.");
+    declareRealArray(t, "Value", Teuchos::Array<double>(),
+                     "Displacement u_D or traction t: one number per space dimension. Empty "
+                     "means zero.",
+                     {0, 2, 3});
+    return pl;
+  }();
+  return valid;
+}
+
+BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterList& pl,
+                                                      int dimension)
+{
+  BoundaryConditions bcs;
+  for (auto it = pl.begin(); it != pl.end(); ++it) {
+    const std::string& name = pl.name(it);
+    const Teuchos::ParameterList& sub = pl.sublist(name);
+    BoundaryCondition bc;
+    bc.boundary = name;
+    const std::string type = sub.get<std::string>("Type");
+    bc.type = type == "Displacement" ? BoundaryType::Displacement
+              : type == "Traction"   ? BoundaryType::Traction
+              : type == "Contact"    ? BoundaryType::Contact
+                                     : BoundaryType::Free;
+    bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
+    if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction) {
+      if (bc.value.empty())
+        bc.value.assign(dimension, 0.0);
+      SC_THROW_IF(static_cast<int>(bc.value.size()) != dimension, InputError,
+                  "'Boundary Conditions/" << name << "/Value' has " << bc.value.size()
+                                          << " components, but Problem/Dimension is " << dimension
+                                          << ": give one value per dimension.");
+    } else {
+      SC_THROW_IF(!bc.value.empty(), InputError,
+                  "'Boundary Conditions/" << name << "/Value' is given, but Type '" << type
+                                          << "' takes no value; remove it or use Type "
+                                          << "Displacement or Traction.");
+    }
+    bcs.conditions.push_back(bc);
+  }
+  return bcs;
+}
+
+bool BoundaryConditions::hasContact() const
+{
+  return std::any_of(conditions.begin(), conditions.end(),
+                     [](const auto& c) { return c.type == BoundaryType::Contact; });
+}
+
+std::vector<std::string> BoundaryConditions::boundariesOfType(BoundaryType type) const
+{
+  std::vector<std::string> names;
+  for (const auto& c : conditions)
+    if (c.type == type)
+      names.push_back(c.boundary);
+  return names;
+}
+
+const BoundaryCondition* BoundaryConditions::find(const std::string& boundary) const
+{
+  for (const auto& c : conditions)
+    if (c.boundary == boundary)
+      return &c;
+  return nullptr;
+}
+
+void BoundaryConditions::checkBoundaryNames(const std::vector<std::string>& meshBoundaries,
+                                            const std::string& meshDescription) const
+{
+  for (const auto& c : conditions) {
+    SC_THROW_IF(std::find(meshBoundaries.begin(), meshBoundaries.end(), c.boundary) ==
+                    meshBoundaries.end(),
+                InputError,
+                "'Boundary Conditions/" << c.boundary << "': the mesh (" << meshDescription
+                                        << ") has no boundary part named '" << c.boundary
+                                        << "'. Its boundary parts are: " << joined(meshBoundaries)
+                                        << ".");
+  }
+}
+
+// ----------------------------------------------------------------------------- Contact
+Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Contact"));
+    declareChoice(*pl, "Obstacle", "Plane", {"Plane"},
+                  "Shape of the rigid foundation (DESIGN §3: gap measured along the face normal).");
+    declareRealArray(*pl, "Obstacle point", Teuchos::tuple<double>(0.0, 0.0),
+                     "A point of the obstacle plane (d components).", {2, 3});
+    declareRealArray(*pl, "Obstacle normal", Teuchos::tuple<double>(0.0, 1.0),
+                     "Normal of the obstacle plane pointing towards the body (d components, "
+                     "normalised on input).",
+                     {2, 3});
+    declareChoice(*pl, "Friction law", "Coulomb", {"None", "Tresca", "Coulomb"},
+                  "None: frictionless Signorini contact; Tresca: given slip bound; Coulomb: "
+                  "|σ_T| ≤ μ_F|σ_N|.");
+    declareReal(*pl, "Friction coefficient", 0.0, "Coulomb friction coefficient μ_F ≥ 0.", 0.0,
+                false, kInfinity, false);
+    declareReal(*pl, "Tresca bound", 0.0, "Slip bound s ≥ 0 of the Tresca law (stress units).",
+                0.0, false, kInfinity, false);
+    return pl;
+  }();
+  return valid;
+}
+
+ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl, int dimension)
+{
+  ContactSettings c;
+  c.obstacle = pl.get<std::string>("Obstacle");
+  c.obstaclePoint = toVector(pl.get<Teuchos::Array<double>>("Obstacle point"));
+  c.obstacleNormal = toVector(pl.get<Teuchos::Array<double>>("Obstacle normal"));
+  for (const char* key : {"Obstacle point", "Obstacle normal"}) {
+    const auto& v = std::string(key) == "Obstacle point" ? c.obstaclePoint : c.obstacleNormal;
+    SC_THROW_IF(static_cast<int>(v.size()) != dimension, InputError,
+                "'Contact/" << key << "' has " << v.size()
+                            << " components, but Problem/Dimension is " << dimension << ".");
+  }
+  double norm = 0.0;
+  for (double x : c.obstacleNormal)
+    norm += x * x;
+  norm = std::sqrt(norm);
+  SC_THROW_IF(norm == 0.0, InputError, "'Contact/Obstacle normal' is the zero vector.");
+  for (double& x : c.obstacleNormal)
+    x /= norm;
+  const std::string law = pl.get<std::string>("Friction law");
+  c.frictionLaw = law == "Coulomb" ? FrictionLaw::Coulomb
+                  : law == "Tresca" ? FrictionLaw::Tresca
+                                    : FrictionLaw::None;
+  c.frictionCoefficient = pl.get<double>("Friction coefficient");
+  c.trescaBound = pl.get<double>("Tresca bound");
+  return c;
+}
+
+// ----------------------------------------------------------------------------- Method settings
+Teuchos::RCP<const Teuchos::ParameterList> DiscretizationSettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Discretization"));
+    declareInt(*pl, "Degree", 1,
+               "Polynomial degree k of RT_k (stress rows) × DP_k (displacement) × CP_k "
+               "(rotation), DESIGN §2.",
+               1, 4);
+    return pl;
+  }();
+  return valid;
+}
+
+DiscretizationSettings DiscretizationSettings::fromParameters(const Teuchos::ParameterList& pl)
+{
+  DiscretizationSettings s;
+  s.degree = pl.get<int>("Degree");
+  return s;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> LinearSolverSettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
+    declareChoice(*pl, "Type", "KLU2", {"KLU2", "MUMPS"},
+                  "Direct solver for the saddle-point system: KLU2 (Amesos2, serial) or MUMPS "
+                  "(parallel LDLᵀ), DESIGN §6.");
+    return pl;
+  }();
+  return valid;
+}
+
+LinearSolverSettings LinearSolverSettings::fromParameters(const Teuchos::ParameterList& pl)
+{
+  LinearSolverSettings s;
+  s.type = pl.get<std::string>("Type");
+  return s;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> EstimatorSettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Estimator"));
+    declareInt(*pl, "Reconstruction degree increase", 1,
+               "The reconstructed displacement u^R is continuous P_{k+increase}: 1 (default, "
+               "DESIGN §4) or 0 (P_k as in the talk).",
+               0, 1);
+    return pl;
+  }();
+  return valid;
+}
+
+EstimatorSettings EstimatorSettings::fromParameters(const Teuchos::ParameterList& pl)
+{
+  EstimatorSettings s;
+  s.reconstructionDegreeIncrease = pl.get<int>("Reconstruction degree increase");
+  return s;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> AdaptivitySettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Adaptivity"));
+    declareInt(*pl, "Cycles", 0,
+               "Number of refinement cycles after the first solve: the run has Cycles + 1 levels.",
+               0, 100);
+    declareChoice(*pl, "Marking", "Dorfler", {"Dorfler", "Maximum", "Uniform"},
+                  "Dorfler: smallest set holding the bulk fraction of η²; Maximum: elements with "
+                  "η_T ≥ bulk · max η_T; Uniform: every element (convergence studies).");
+    declareReal(*pl, "Bulk parameter", 0.5, "θ of Dörfler / maximum marking, in (0, 1].", 0.0,
+                true, 1.0, false);
+    declareInt(*pl, "Max DOFs", 2000000,
+               "Stop refining before a cycle would exceed this many DOFs (total).", 1, INT_MAX);
+    declareReal(*pl, "Target eta", 0.0, "Stop when η_CF falls below this value (0: never).", 0.0,
+                false, kInfinity, false);
+    return pl;
+  }();
+  return valid;
+}
+
+AdaptivitySettings AdaptivitySettings::fromParameters(const Teuchos::ParameterList& pl)
+{
+  AdaptivitySettings s;
+  s.cycles = pl.get<int>("Cycles");
+  const std::string m = pl.get<std::string>("Marking");
+  s.marking = m == "Uniform"   ? MarkingStrategy::Uniform
+              : m == "Maximum" ? MarkingStrategy::Maximum
+                               : MarkingStrategy::Dorfler;
+  s.bulkParameter = pl.get<double>("Bulk parameter");
+  s.maxDofs = pl.get<int>("Max DOFs");
+  s.targetEta = pl.get<double>("Target eta");
+  return s;
+}
+
+}  // namespace sc::core

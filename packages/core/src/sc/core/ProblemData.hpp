@@ -1,0 +1,121 @@
+#pragma once
+// The data of a scene (DESIGN §1, §9), separate from the kernels that use it (STYLE.md 2):
+// problem dimension, material, boundary conditions, contact data, and the method settings
+// (degree, linear solver, estimator, adaptivity). Each struct owns one sublist of the deck and
+// describes it in getValidParameters(); fromParameters() reads a validated list.
+//
+// The method settings live here until their packages exist (discretization #4, solvers #4/#7,
+// estimator #6, adapt #6); each moves to its package then, keeping its keys.
+
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+namespace sc::core {
+
+struct ProblemSettings {
+  int dimension = 2;  ///< 2 (plane strain) or 3
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static ProblemSettings fromParameters(const Teuchos::ParameterList& problemList);
+};
+
+/// Isotropic linear elastic material given by E and ν. λ is never formed (DESIGN §1), so
+/// ν = 0.5 (incompressible) is valid.
+struct Material {
+  double youngModulus = 1.0;
+  double poissonRatio = 0.3;
+
+  double shearModulus() const { return youngModulus / (2.0 * (1.0 + poissonRatio)); }
+  /// c_d = ν / (1 + (d − 2)ν) in Aτ = (1/2μ)(τ − c_d tr(τ) I) (plane strain for d = 2).
+  double complianceCoefficient(int dim) const
+  {
+    return poissonRatio / (1.0 + (dim - 2) * poissonRatio);
+  }
+  /// Plane-strain modulus E* = E/(1 − ν²) used by the Hertz formulas (DESIGN §9).
+  double planeStrainModulus() const
+  {
+    return youngModulus / (1.0 - poissonRatio * poissonRatio);
+  }
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static Material fromParameters(const Teuchos::ParameterList& materialList);
+};
+
+enum class BoundaryType { Displacement, Traction, Contact, Free };
+std::string toString(BoundaryType type);
+
+struct BoundaryCondition {
+  std::string boundary;       ///< name of the boundary part (mesh physical name)
+  BoundaryType type = BoundaryType::Free;
+  std::vector<double> value;  ///< u_D (Displacement) or t (Traction), d components; empty otherwise
+};
+
+/// "Boundary Conditions/<boundary name>/{Type, Value}". Boundary parts not named in the deck
+/// are traction-free.
+struct BoundaryConditions {
+  std::vector<BoundaryCondition> conditions;
+
+  bool hasContact() const;
+  std::vector<std::string> boundariesOfType(BoundaryType type) const;
+  const BoundaryCondition* find(const std::string& boundary) const;
+  /// Checks every named boundary exists in `meshBoundaries`; the error lists the valid names.
+  void checkBoundaryNames(const std::vector<std::string>& meshBoundaries,
+                          const std::string& meshDescription) const;
+
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static BoundaryConditions fromParameters(const Teuchos::ParameterList& bcList, int dimension);
+};
+
+enum class FrictionLaw { None, Tresca, Coulomb };
+
+/// "Contact": the rigid obstacle and the friction law (DESIGN §3).
+struct ContactSettings {
+  std::string obstacle = "Plane";
+  std::vector<double> obstaclePoint;   ///< a point of the plane
+  std::vector<double> obstacleNormal;  ///< unit normal of the plane, pointing into the body
+  FrictionLaw frictionLaw = FrictionLaw::None;
+  double frictionCoefficient = 0.0;
+  double trescaBound = 0.0;
+
+  /// Friction rows are built only when they can be non-zero (no friction machinery otherwise).
+  bool needsFriction() const
+  {
+    return (frictionLaw == FrictionLaw::Coulomb && frictionCoefficient > 0.0) ||
+           (frictionLaw == FrictionLaw::Tresca && trescaBound > 0.0);
+  }
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static ContactSettings fromParameters(const Teuchos::ParameterList& contactList, int dimension);
+};
+
+struct DiscretizationSettings {
+  int degree = 1;  ///< k of RT_k × DP_k × CP_k (DESIGN §2)
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static DiscretizationSettings fromParameters(const Teuchos::ParameterList& list);
+};
+
+struct LinearSolverSettings {
+  std::string type = "KLU2";
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static LinearSolverSettings fromParameters(const Teuchos::ParameterList& list);
+};
+
+struct EstimatorSettings {
+  int reconstructionDegreeIncrease = 1;  ///< u^R in P_{k+increase} (DESIGN §4)
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static EstimatorSettings fromParameters(const Teuchos::ParameterList& list);
+};
+
+enum class MarkingStrategy { Dorfler, Maximum, Uniform };
+
+struct AdaptivitySettings {
+  int cycles = 0;
+  MarkingStrategy marking = MarkingStrategy::Dorfler;
+  double bulkParameter = 0.5;
+  long long maxDofs = 2000000;
+  double targetEta = 0.0;
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  static AdaptivitySettings fromParameters(const Teuchos::ParameterList& list);
+};
+
+}  // namespace sc::core

@@ -1,0 +1,51 @@
+#include "sc/core/Timers.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+namespace sc::core {
+
+PhaseTimers::PhaseTimers(Teuchos::RCP<const Teuchos::Comm<int>> comm)
+  : comm_(std::move(comm)), start_(Teuchos::Time::wallTime())
+{
+}
+
+PhaseTimers::Scope::Scope(PhaseTimers& owner, std::string phase)
+  : owner_(owner), phase_(std::move(phase)),
+    teuchosTimer_(Teuchos::TimeMonitor::getNewCounter("StressContact: " + phase_)),
+    start_(Teuchos::Time::wallTime())
+{
+  teuchosTimer_->start();
+}
+
+PhaseTimers::Scope::~Scope()
+{
+  teuchosTimer_->stop();
+  if (owner_.current_.find(phase_) == owner_.current_.end())
+    owner_.order_.push_back(phase_);
+  owner_.current_[phase_] += Teuchos::Time::wallTime() - start_;
+}
+
+void PhaseTimers::nextCycle() { current_.clear(); }
+
+std::map<std::string, double> PhaseTimers::cycleTimings() const
+{
+  // Phases are the same on every rank (the driver runs the same phases everywhere), so the
+  // reduction over a std::map's values in key order is consistent.
+  std::vector<double> local;
+  for (const auto& [name, seconds] : current_)
+    local.push_back(seconds);
+  std::vector<double> global(local.size(), 0.0);
+  if (!local.empty())
+    Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
+                                    local.data(), global.data());
+  std::map<std::string, double> result;
+  std::size_t i = 0;
+  for (const auto& kv : current_)
+    result[kv.first] = global[i++];
+  return result;
+}
+
+double PhaseTimers::elapsed() const { return Teuchos::Time::wallTime() - start_; }
+
+}  // namespace sc::core

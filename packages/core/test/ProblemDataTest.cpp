@@ -1,0 +1,66 @@
+// Unit tests of the scene data: compliance coefficient c_d, Hertz modulus, boundary conditions
+// against the problem dimension and the mesh's boundary names, contact normal normalisation.
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include "sc/core/Error.hpp"
+#include "sc/core/Parameters.hpp"
+#include "sc/core/ProblemData.hpp"
+
+using Teuchos::ParameterList;
+
+TEUCHOS_UNIT_TEST(ProblemData, ComplianceCoefficient)
+{
+  // Analytic: c_d = λ/(dλ + 2μ) with λ = Eν/((1+ν)(1−2ν)), μ = E/(2(1+ν)) equals ν/(1+(d−2)ν).
+  sc::core::Material m{20600.0, 0.28};
+  const double E = m.youngModulus, nu = m.poissonRatio;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  TEST_FLOATING_EQUALITY(m.complianceCoefficient(2), lambda / (2 * lambda + 2 * mu), 1e-14);
+  TEST_FLOATING_EQUALITY(m.complianceCoefficient(3), lambda / (3 * lambda + 2 * mu), 1e-14);
+  TEST_FLOATING_EQUALITY(m.shearModulus(), mu, 1e-14);
+  // Incompressible limit (λ → ∞): c_d → 1/d, finite.
+  sc::core::Material inc{1.0, 0.5};
+  TEST_FLOATING_EQUALITY(inc.complianceCoefficient(2), 0.5, 1e-15);
+  TEST_FLOATING_EQUALITY(inc.complianceCoefficient(3), 1.0 / 3.0, 1e-15);
+}
+
+TEUCHOS_UNIT_TEST(ProblemData, BoundaryConditions)
+{
+  ParameterList bc;
+  bc.sublist("Top").set("Type", std::string("Displacement"));
+  bc.sublist("Top").set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -0.01)));
+  bc.sublist("Arc").set("Type", std::string("Contact"));
+  ParameterList valid = *sc::core::BoundaryConditions::getValidParameters();
+  sc::core::validateParameters(bc, valid, "test");
+  auto bcs = sc::core::BoundaryConditions::fromParameters(bc, 2);
+  TEST_ASSERT(bcs.hasContact());
+  TEST_EQUALITY(bcs.find("Top")->value.size(), 2u);
+  TEST_FLOATING_EQUALITY(bcs.find("Top")->value[1], -0.01, 1e-15);
+  bcs.checkBoundaryNames({"Top", "Arc"}, "Half disc");
+  try {
+    bcs.checkBoundaryNames({"Top", "Cap"}, "Half ball");
+    TEST_ASSERT(false);
+  } catch (const sc::core::InputError& e) {
+    const std::string msg = e.what();
+    TEST_ASSERT(msg.find("no boundary part named 'Arc'") != std::string::npos);
+    TEST_ASSERT(msg.find("'Top', 'Cap'") != std::string::npos);
+  }
+  // 2 components in a 3D problem.
+  TEST_THROW(sc::core::BoundaryConditions::fromParameters(bc, 3), sc::core::InputError);
+}
+
+TEUCHOS_UNIT_TEST(ProblemData, ContactNormalIsNormalised)
+{
+  ParameterList c;
+  c.set("Obstacle normal", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 2.0)));
+  c.set("Friction law", std::string("None"));
+  c.set("Friction coefficient", 0.4);
+  sc::core::validateParameters(c, *sc::core::ContactSettings::getValidParameters(), "test");
+  auto s = sc::core::ContactSettings::fromParameters(c, 2);
+  TEST_FLOATING_EQUALITY(s.obstacleNormal[1], 1.0, 1e-15);
+  // Law None: no friction machinery whatever the coefficient.
+  TEST_ASSERT(!s.needsFriction());
+  c.set("Friction law", std::string("Coulomb"));
+  TEST_ASSERT(sc::core::ContactSettings::fromParameters(c, 2).needsFriction());
+  c.set("Friction coefficient", 0.0);
+  TEST_ASSERT(!sc::core::ContactSettings::fromParameters(c, 2).needsFriction());
+}
