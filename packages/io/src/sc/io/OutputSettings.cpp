@@ -1,0 +1,52 @@
+#include <sc/io/OutputSettings.hpp>
+
+#include <sc/core/Error.hpp>
+
+#include <exception>
+
+namespace sc::io {
+
+Teuchos::RCP<const Teuchos::ParameterList> OutputSettings::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList(sublistName));
+    pl->set<std::string>("Directory", "output",
+                         "Directory for all output files (summary.json, XDMF/HDF5, CSV); created "
+                         "with its parents if missing. The command line option --output overrides it.");
+    pl->set<std::string>("Base name", "solution",
+                         "File name stem of the field output: <Base name>.xdmf and "
+                         "<Base name>_c<NNNN>.h5 per adaptive cycle. No '/'.");
+    pl->set<bool>("Write XDMF", true,
+                  "Write the fields (stress, displacement, rotation, estimator, partition) as "
+                  "XDMF + parallel HDF5 for ParaView, one step per adaptive cycle.");
+    pl->set<bool>("Write contact CSV", true,
+                  "Write contact_cycle<N>.csv with the contact-boundary quantities of each cycle.");
+    return Teuchos::RCP<const Teuchos::ParameterList>(pl);
+  }();
+  return valid;
+}
+
+OutputSettings::OutputSettings() : OutputSettings(Teuchos::ParameterList(sublistName)) {}
+
+OutputSettings::OutputSettings(const Teuchos::ParameterList& outputSublist)
+{
+  Teuchos::ParameterList pl(outputSublist);
+  try {
+    pl.validateParametersAndSetDefaults(*getValidParameters());
+  } catch (const std::exception& e) {
+    // Teuchos' message names the key, the sublist and the valid keys.
+    SC_THROW_IF(true, sc::core::InputError, "Invalid parameter in sublist \"" << sublistName
+                                                << "\":\n" << e.what());
+  }
+  directory = pl.get<std::string>("Directory");
+  baseName = pl.get<std::string>("Base name");
+  writeXdmf = pl.get<bool>("Write XDMF");
+  writeContactCsv = pl.get<bool>("Write contact CSV");
+  SC_THROW_IF(directory.empty(), sc::core::InputError,
+              "Output/Directory is empty; give a directory such as \"output\"");
+  SC_THROW_IF(baseName.empty() || baseName.find('/') != std::string::npos, sc::core::InputError,
+              "Output/Base name = \"" << baseName
+                                      << "\" is not valid: give a non-empty file name without '/'");
+}
+
+}  // namespace sc::io

@@ -1,0 +1,33 @@
+#pragma once
+// The "Output" sublist of the input deck: where and what to write (docs/output.md).
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <string>
+
+namespace sc::io {
+
+class OutputSettings {
+public:
+  /// Name of the sublist in the deck.
+  static constexpr const char* sublistName = "Output";
+
+  /// Every key with its default and documentation (cached; Belos/Tempus convention).
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+
+  /// Defaults only.
+  OutputSettings();
+
+  /// Validate \p outputSublist (a copy is completed with defaults) and read it. Throws
+  /// sc::core::InputError naming the key (as Output/<key>) for unknown keys, wrong types and bad
+  /// values.
+  explicit OutputSettings(const Teuchos::ParameterList& outputSublist);
+
+  std::string directory;     ///< Output/Directory
+  std::string baseName;      ///< Output/Base name
+  bool writeXdmf;            ///< Output/Write XDMF
+  bool writeContactCsv;      ///< Output/Write contact CSV
+};
+
+}  // namespace sc::io
