@@ -30,6 +30,10 @@ Teuchos::RCP<const Teuchos::ParameterList> ProblemSettings::getValidParameters()
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Problem"));
     declareInt(*pl, "Dimension", 2, "Space dimension: 2 (plane strain) or 3.", 2, 3);
     declareString(*pl, "Name", "", "Free-text name of the study, copied to summary.json.");
+    declareChoice(*pl, "Exact solution", "None", {"None", "Manufactured smooth", "Linear patch"},
+                  "Known solution for verification: errors are reported in summary.json, and "
+                  "boundary data of Type Displacement/Traction with 'Data' = 'Exact solution' and "
+                  "the body force come from it (docs/verification.md).");
     return pl;
   }();
   return valid;
@@ -39,6 +43,7 @@ ProblemSettings ProblemSettings::fromParameters(const Teuchos::ParameterList& pl
 {
   ProblemSettings s;
   s.dimension = pl.get<int>("Dimension");
+  s.exactSolution = pl.get<std::string>("Exact solution");
   return s;
 }
 
@@ -94,6 +99,9 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
                      "Displacement u_D or traction t: one number per space dimension. Empty "
                      "means zero.",
                      {0, 2, 3});
+    declareChoice(t, "Data", "Value", {"Value", "Exact solution"},
+                  "Where u_D or t comes from: the constant 'Value', or the exact solution named "
+                  "by 'Problem/Exact solution' (manufactured scenes).");
     return pl;
   }();
   return valid;
@@ -114,6 +122,7 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
               : type == "Contact"    ? BoundaryType::Contact
                                      : BoundaryType::Free;
     bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
+    bc.fromExactSolution = sub.get<std::string>("Data") == "Exact solution";
     if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction) {
       if (bc.value.empty())
         bc.value.assign(dimension, 0.0);

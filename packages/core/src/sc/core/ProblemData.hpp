@@ -17,6 +17,7 @@ namespace sc::core {
 
 struct ProblemSettings {
   int dimension = 2;  ///< 2 (plane strain) or 3
+  std::string exactSolution = "None";  ///< name for createExactSolution (ExactSolution.hpp)
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static ProblemSettings fromParameters(const Teuchos::ParameterList& problemList);
 };
@@ -49,6 +50,7 @@ struct BoundaryCondition {
   std::string boundary;       ///< name of the boundary part (mesh physical name)
   BoundaryType type = BoundaryType::Free;
   std::vector<double> value;  ///< u_D (Displacement) or t (Traction), d components; empty otherwise
+  bool fromExactSolution = false;  ///< u_D or t from Problem/Exact solution instead of value
 };
 
 /// "Boundary Conditions/<boundary name>/{Type, Value}". Boundary parts not named in the deck
