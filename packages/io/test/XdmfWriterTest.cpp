@@ -454,6 +454,33 @@ TEUCHOS_UNIT_TEST(XdmfWriter, RewritingACycleReplacesItsStep)
     checkXdmf(dir, writer.xdmfPath(), {0.0, 7.0}, out, success);
 }
 
+TEUCHOS_UNIT_TEST(XdmfWriter, GridEmptyOnAllRanksIsWrittenToH5AndLeftOutOfXdmf)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string dir = freshDirectory(*comm, "xdmf_empty");
+  sc::io::XdmfWriter writer(comm, dir, "solution");
+  auto grids = pieces2D({2, 3}, comm->getRank(), comm->getSize());
+  grids[1].connectivity.clear();  // no boundary facets anywhere (e.g. no contact yet)
+  grids[1].integerCellFields[0].values.clear();
+  writer.writeStep(0, grids);
+  comm->barrier();
+  if (comm->getRank() != 0)
+    return;
+  hid_t f = H5Fopen(writer.h5Path(0).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  TEST_ASSERT(f >= 0);
+  if (f >= 0) {
+    const Dataset topo = readDataset(f, "/boundary/topology");
+    TEST_COMPARE_ARRAYS(topo.dims, (std::vector<hsize_t>{0, 2}));
+    H5Fclose(f);
+  }
+  checkXdmf(dir, writer.xdmfPath(), {0.0}, out, success);
+  std::ifstream in(writer.xdmfPath());
+  std::stringstream s;
+  s << in.rdbuf();
+  TEST_ASSERT(s.str().find("Name=\"boundary\"") == std::string::npos);
+  TEST_ASSERT(s.str().find("Name=\"domain\"") != std::string::npos);
+}
+
 TEUCHOS_UNIT_TEST(XdmfWriter, BadPieceOnLastRankThrowsInputErrorOnAllRanks)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();

@@ -119,6 +119,10 @@ void writeDataset(const H5Context& ctx, hid_t parent, const std::string& path, h
                                    H5P_DEFAULT, H5P_DEFAULT),
                         "H5Dcreate2", path),
               H5Dclose);
+  // Nothing to transfer anywhere (HDF5 rejects a write to a zero-sized dataset); every rank
+  // knows globalRows, so all skip the collective write together.
+  if (globalRows == 0)
+    return;
   Handle memSpace(ctx.check(H5Screate_simple(rank, localDims, nullptr), "H5Screate_simple", path),
                   H5Sclose);
   if (localRows == 0) {
