@@ -1,0 +1,250 @@
+#include <sc/mesh/GmshMeshIO.hpp>
+
+#include <sc/core/Error.hpp>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <unordered_map>
+
+namespace sc::mesh {
+
+namespace {
+
+// Gmsh keeps global state: one session per call, finalised even when we throw.
+class GmshSession {
+public:
+  GmshSession()
+  {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.Verbosity", 1);
+    gmsh::option::setNumber("General.NumThreads", 1);
+    gmsh::logger::start();  // keeps error messages for our exceptions
+  }
+  ~GmshSession()
+  {
+    try {
+      gmsh::logger::stop();
+      gmsh::finalize();
+    } catch (...) {
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+std::string lastGmshError()
+{
+  std::string err;
+  try {
+    gmsh::logger::getLastError(err);
+  } catch (...) {
+  }
+  return err.empty() ? std::string("(Gmsh gave no message)") : err;
+}
+
+std::string elementTypeName(int type)
+{
+  std::string name;
+  int d, order, nn, npn;
+  std::vector<double> coords;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, d, order, nn, coords, npn);
+  } catch (...) {
+    name = "unknown";
+  }
+  return "'" + name + "' (Gmsh element type " + std::to_string(type) + ")";
+}
+
+// Build a SimplexMesh from the mesh of the current Gmsh model: elements of dimension `dim`,
+// boundary parts from the physical groups of dimension dim−1 (in the order of `partOrder` if
+// given, else by group tag).
+Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
+                                      const std::vector<std::string>& partOrder)
+{
+  const int linearType = dim == 2 ? 2 : 4;  // 3-node triangle, 4-node tetrahedron
+  const int faceType = dim == 2 ? 1 : 2;    // 2-node line, 3-node triangle
+  const int nve = dim + 1;
+
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> elemTags, nodeTags;
+  gmsh::model::mesh::getElements(types, elemTags, nodeTags, dim, -1);
+  std::vector<std::size_t> elemNodes;
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    SC_THROW_IF(types[t] != linearType, sc::core::InputError,
+                origin << ": unsupported element type " << elementTypeName(types[t]) << " (element "
+                       << (elemTags[t].empty() ? 0 : elemTags[t][0])
+                       << "); StressContact reads linear "
+                       << (dim == 2 ? "3-node triangles" : "4-node tetrahedra") << " only");
+    elemNodes.insert(elemNodes.end(), nodeTags[t].begin(), nodeTags[t].end());
+  }
+  SC_THROW_IF(elemNodes.empty(), sc::core::InputError,
+              origin << ": the file has no " << (dim == 2 ? "triangles" : "tetrahedra")
+                     << " (empty or truncated file, or a mesh of another dimension)");
+
+  // Nodes used by elements, numbered 0.. in order of first appearance.
+  std::unordered_map<std::size_t, int> index;
+  index.reserve(elemNodes.size());
+  std::vector<int> elemVerts(elemNodes.size());
+  std::vector<std::size_t> usedTags;
+  for (std::size_t i = 0; i < elemNodes.size(); ++i) {
+    auto [it, inserted] = index.emplace(elemNodes[i], static_cast<int>(usedTags.size()));
+    if (inserted) usedTags.push_back(elemNodes[i]);
+    elemVerts[i] = it->second;
+  }
+  std::vector<std::size_t> allTags;
+  std::vector<double> allCoords, params;
+  gmsh::model::mesh::getNodes(allTags, allCoords, params, -1, -1, true, false);
+  std::vector<double> coords(usedTags.size() * dim, std::nan(""));
+  double extent = 0;
+  for (std::size_t i = 0; i < allTags.size(); ++i)
+    for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(allCoords[3 * i + k]));
+  for (std::size_t i = 0; i < allTags.size(); ++i) {
+    auto it = index.find(allTags[i]);
+    if (it == index.end()) continue;
+    for (int k = 0; k < dim; ++k) coords[static_cast<std::size_t>(it->second) * dim + k] = allCoords[3 * i + k];
+    SC_THROW_IF(dim == 2 && std::abs(allCoords[3 * i + 2]) > 1e-10 * std::max(extent, 1.0),
+                sc::core::InputError,
+                origin << ": node " << allTags[i] << " has z = " << allCoords[3 * i + 2]
+                       << "; a 2D mesh must lie in the plane z = 0");
+  }
+  for (std::size_t v = 0; v < usedTags.size(); ++v)
+    SC_THROW_IF(std::isnan(coords[v * dim]), sc::core::InputError,
+                origin << ": node " << usedTags[v]
+                       << " is used by an element but has no coordinates (truncated file?)");
+
+  // Boundary parts from physical groups of dimension dim−1.
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim - 1);
+  std::vector<std::string> names = partOrder;
+  std::vector<int> bfv, bpart;
+  for (const auto& [gd, gtag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(gd, gtag, name);
+    if (name.empty()) name = std::to_string(gtag);
+    auto pos = std::find(names.begin(), names.end(), name);
+    const int part = static_cast<int>(pos - names.begin());
+    if (pos == names.end()) names.push_back(name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(gd, gtag, entities);
+    for (int ent : entities) {
+      std::vector<int> ft;
+      std::vector<std::vector<std::size_t>> fTags, fNodes;
+      gmsh::model::mesh::getElements(ft, fTags, fNodes, dim - 1, ent);
+      for (std::size_t t = 0; t < ft.size(); ++t) {
+        SC_THROW_IF(ft[t] != faceType, sc::core::InputError,
+                    origin << ": physical group '" << name << "' holds unsupported element type "
+                           << elementTypeName(ft[t]));
+        for (std::size_t i = 0; i < fNodes[t].size(); ++i) {
+          auto it = index.find(fNodes[t][i]);
+          SC_THROW_IF(it == index.end(), sc::core::InputError,
+                      origin << ": boundary element " << fTags[t][i / dim] << " of physical group '"
+                             << name << "' uses node " << fNodes[t][i]
+                             << ", which belongs to no " << (dim == 2 ? "triangle" : "tetrahedron"));
+          bfv.push_back(it->second);
+        }
+        bpart.insert(bpart.end(), fTags[t].size(), part);
+      }
+    }
+  }
+  (void)nve;
+  return Teuchos::rcp(new SimplexMesh(dim, std::move(coords), std::move(elemVerts), bfv, bpart,
+                                      names, origin));
+}
+
+void buildGeometryModel(const Geometry& geometry, double meshSize)
+{
+  const int dim = geometry.dim();
+  gmsh::model::add("scene");
+  geometry.addToGmshModel();
+  gmsh::vectorpair bents;
+  gmsh::model::getEntities(bents, dim - 1);
+  std::map<std::string, std::vector<int>> byName;
+  for (const auto& [d, tag] : bents) {
+    std::array<double, 3> com;
+    gmsh::model::occ::getCenterOfMass(d, tag, com[0], com[1], com[2]);
+    byName[geometry.classifyBoundaryEntity(com)].push_back(tag);
+  }
+  const auto names = geometry.boundaryNames();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    auto it = byName.find(names[i]);
+    SC_THROW_IF(it == byName.end(), sc::core::InternalError,
+                geometry.sceneName() << ": Gmsh model has no boundary entity for '" << names[i]
+                                     << "'");
+    const int g = gmsh::model::addPhysicalGroup(dim - 1, it->second, static_cast<int>(i) + 1);
+    gmsh::model::setPhysicalName(dim - 1, g, names[i]);
+  }
+  gmsh::vectorpair dents;
+  gmsh::model::getEntities(dents, dim);
+  std::vector<int> dtags;
+  for (const auto& p : dents) dtags.push_back(p.second);
+  const int g = gmsh::model::addPhysicalGroup(dim, dtags, 100);
+  gmsh::model::setPhysicalName(dim, g, "Domain");
+  gmsh::option::setNumber("Mesh.MeshSizeMax", meshSize);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::model::mesh::generate(dim);
+}
+
+}  // namespace
+
+Teuchos::RCP<SimplexMesh> GmshMeshIO::meshGeometry(const Geometry& geometry, double meshSize)
+{
+  SC_THROW_IF(!(meshSize > 0), sc::core::InputError,
+              "Mesh/Initial mesh size = " << meshSize << " must be > 0");
+  GmshSession session;
+  const std::string origin = "scene '" + geometry.sceneName() + "'";
+  try {
+    buildGeometryModel(geometry, meshSize);
+  } catch (const sc::core::Error&) {
+    throw;
+  } catch (...) {
+    SC_THROW_IF(true, sc::core::InternalError,
+                origin << ": Gmsh failed to mesh the scene: " << lastGmshError());
+  }
+  return extractMesh(geometry.dim(), origin, geometry.boundaryNames());
+}
+
+void GmshMeshIO::writeGeometryMesh(const Geometry& geometry, double meshSize,
+                                   const std::string& path, double version)
+{
+  GmshSession session;
+  buildGeometryModel(geometry, meshSize);
+  gmsh::option::setNumber("Mesh.MshFileVersion", version);
+  gmsh::write(path);
+}
+
+Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
+{
+  const std::string origin = "Gmsh file '" + path + "'";
+  {
+    std::ifstream probe(path);
+    SC_THROW_IF(!probe, sc::core::InputError,
+                origin << " (Mesh/File) cannot be opened: no such file or no read permission");
+  }
+  GmshSession session;
+  try {
+    gmsh::open(path);
+  } catch (...) {
+    SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());
+  }
+  std::string err;
+  gmsh::logger::getLastError(err);
+  SC_THROW_IF(!err.empty(), sc::core::InputError, origin << " cannot be read: " << err);
+  const int modelDim = gmsh::model::getDimension();
+  SC_THROW_IF(modelDim != dim, sc::core::InputError,
+              origin << " holds a mesh of dimension " << modelDim << " but Problem/Dimension = "
+                     << dim << (modelDim < 0 ? " (empty, truncated or not a .msh file?)" : ""));
+  try {
+    return extractMesh(dim, origin, {});
+  } catch (const sc::core::Error&) {
+    throw;
+  } catch (...) {
+    SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());
+  }
+}
+
+}  // namespace sc::mesh

@@ -1,0 +1,117 @@
+#include <sc/mesh/MeshFactory.hpp>
+
+#include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
+#include <sc/mesh/BoxGeometry.hpp>
+#include <sc/mesh/GmshMeshIO.hpp>
+#include <sc/mesh/HalfBallGeometry.hpp>
+#include <sc/mesh/HalfDiscGeometry.hpp>
+
+namespace sc::mesh {
+
+const std::vector<std::string>& MeshFactory::sources()
+{
+  static const std::vector<std::string> s = {"Half disc", "Half ball", "Unit square",
+                                             "Unit cube", "Rectangle", "Gmsh file"};
+  return s;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid;
+  if (valid.is_null()) {
+    auto p = Teuchos::rcp(new Teuchos::ParameterList("Mesh"));
+    sc::core::declareChoice(*p, "Source", "Half disc", sources(),
+                            "Domain: a scene geometry (Half disc, Half ball: Hertz 2D/3D; Unit "
+                            "square/cube, Rectangle: manufactured) or a Gmsh .msh file (Mesh/File)");
+    sc::core::declareReal(*p, "Initial mesh size", 0.25,
+                          "Target element size of the initial Gmsh mesh (Gmsh Mesh.MeshSizeMax)",
+                          0.0, /*lowerOpen=*/true);
+    sc::core::declareInt(*p, "Uniform refinements", 0,
+                         "Uniform bisection levels applied to the initial mesh (x4 elements per "
+                         "level in 2D, x8 in 3D)",
+                         0, 20);
+    sc::core::declareBool(*p, "Project boundary", true,
+                          "Project new vertices on curved boundaries (Arc, Cap) onto the exact "
+                          "circle/sphere; false keeps the initial polygonal boundary");
+    sc::core::declareReal(*p, "Radius", 1.0, "Radius R of the Half disc / Half ball", 0.0, true);
+    sc::core::declareString(*p, "File", "",
+                            "Gmsh .msh file (format 2.2 or 4.1) for Source = Gmsh file; relative "
+                            "paths are taken from the working directory");
+    sc::core::declareRealArray(*p, "Lower corner", Teuchos::tuple<double>(0.0, 0.0),
+                               "Lower-left corner of the Rectangle", {2});
+    sc::core::declareRealArray(*p, "Upper corner", Teuchos::tuple<double>(1.0, 1.0),
+                               "Upper-right corner of the Rectangle", {2});
+    valid = p;
+  }
+  return valid;
+}
+
+namespace {
+// Validate a copy, wrapped as sublist "Mesh" so that errors name 'Mesh/<key>'.
+Teuchos::ParameterList validated(const Teuchos::ParameterList& meshList)
+{
+  Teuchos::ParameterList user, valid;
+  user.sublist("Mesh") = meshList;
+  user.sublist("Mesh").setName("Mesh");
+  valid.sublist("Mesh") = *MeshFactory::getValidParameters();
+  sc::core::validateParameters(user, valid, "Mesh parameters");
+  return user.sublist("Mesh");
+}
+
+int sceneDimension(const std::string& source)
+{
+  if (source == "Half ball" || source == "Unit cube") return 3;
+  if (source == "Gmsh file") return 0;
+  return 2;
+}
+}  // namespace
+
+Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::ParameterList& meshList,
+                                                        int dimension)
+{
+  const Teuchos::ParameterList p = validated(meshList);
+  const std::string source = p.get<std::string>("Source");
+  SC_THROW_IF(dimension != 2 && dimension != 3, sc::core::InputError,
+              "Problem/Dimension = " << dimension << " is not valid (2 or 3)");
+  const int sd = sceneDimension(source);
+  SC_THROW_IF(sd != 0 && sd != dimension, sc::core::InputError,
+              "'Mesh/Source' = '" << source << "' is a " << sd << "D scene but Problem/Dimension = "
+                                  << dimension << "; " << dimension << "D scenes: "
+                                  << (dimension == 2 ? "'Half disc', 'Unit square', 'Rectangle'"
+                                                     : "'Half ball', 'Unit cube'")
+                                  << ", 'Gmsh file'");
+  const double R = p.get<double>("Radius");
+  if (source == "Half disc") return Teuchos::rcp(new HalfDiscGeometry(R));
+  if (source == "Half ball") return Teuchos::rcp(new HalfBallGeometry(R));
+  if (source == "Unit square") return Teuchos::rcp(new BoxGeometry({0, 0}, {1, 1}, source));
+  if (source == "Unit cube") return Teuchos::rcp(new BoxGeometry({0, 0, 0}, {1, 1, 1}, source));
+  if (source == "Rectangle") {
+    const auto lo = p.get<Teuchos::Array<double>>("Lower corner");
+    const auto hi = p.get<Teuchos::Array<double>>("Upper corner");
+    return Teuchos::rcp(new BoxGeometry(std::vector<double>(lo.begin(), lo.end()),
+                                        std::vector<double>(hi.begin(), hi.end()), source));
+  }
+  return Teuchos::null;  // Gmsh file
+}
+
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
+                                                  int dimension)
+{
+  const Teuchos::ParameterList p = validated(meshList);
+  auto geometry = buildGeometry(p, dimension);
+  Teuchos::RCP<SimplexMesh> initial;
+  if (geometry.is_null()) {
+    const std::string file = p.get<std::string>("File");
+    SC_THROW_IF(file.empty(), sc::core::InputError,
+                "'Mesh/Source' = 'Gmsh file' needs 'Mesh/File' (path of a .msh file)");
+    initial = GmshMeshIO::readFile(file, dimension);
+  } else {
+    initial = GmshMeshIO::meshGeometry(*geometry, p.get<double>("Initial mesh size"));
+  }
+  auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
+  for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
+  return refiner;
+}
+
+}  // namespace sc::mesh

@@ -1,0 +1,36 @@
+#pragma once
+// Builds the mesh of a run from the "Mesh" sublist (docs/mesh.md): scene geometry or Gmsh file,
+// initial Gmsh mesh, uniform refinements, and the BisectionRefiner that the adaptive loop keeps.
+
+#include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/Geometry.hpp>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <string>
+#include <vector>
+
+namespace sc::mesh {
+
+class MeshFactory {
+public:
+  /// Valid "Mesh" sublist: Source, Initial mesh size, Uniform refinements, Project boundary,
+  /// Radius, File, Lower corner, Upper corner (each with default, doc string and validator).
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+
+  /// Values of Mesh/Source.
+  static const std::vector<std::string>& sources();
+
+  /// Validate `meshList` (a copy is checked and completed with defaults; errors name
+  /// 'Mesh/<key>'), check it against Problem/Dimension `dimension` (2 or 3), mesh the initial
+  /// domain, apply Mesh/Uniform refinements, and return the refiner holding the current mesh.
+  static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
+                                              int dimension);
+
+  /// The scene geometry of a validated list (null for "Gmsh file").
+  static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,
+                                                    int dimension);
+};
+
+}  // namespace sc::mesh

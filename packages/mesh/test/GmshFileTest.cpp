@@ -1,0 +1,119 @@
+// Gmsh .msh input. The stored files half_disc_h0.25_v41.msh / _v22.msh were written by Gmsh 4.8.4
+// through GmshMeshIO::writeGeometryMesh(HalfDiscGeometry(1), 0.25, ...) (tool
+// mesh_write_test_meshes), so reading them must give the built-in scene's boundary names and
+// measure (stored reference: the scene mesh, equal to rounding).
+#include "MeshTestUtils.hpp"
+
+#include <sc/core/Error.hpp>
+#include <sc/mesh/GmshMeshIO.hpp>
+#include <sc/mesh/HalfDiscGeometry.hpp>
+
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+using namespace sc::mesh;
+using sc::mesh::test::contains;
+
+const std::string dataDir = SC_MESH_TEST_DATA;
+
+void expectInputError(const std::function<void()>& f, const std::vector<std::string>& what,
+                      bool& success, Teuchos::FancyOStream& out)
+{
+  try {
+    f();
+    out << "no exception\n";
+    success = false;
+  } catch (const sc::core::InputError& e) {
+    out << "message: " << e.what() << "\n";
+    for (const auto& w : what) TEST_ASSERT(contains(e.what(), w));
+  }
+}
+
+std::string writeFile(const std::string& name, const std::string& text)
+{
+  std::ofstream(name) << text;
+  return name;
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, HalfDiscFilesMatchTheScene)
+{
+  const HalfDiscGeometry g(1.0);
+  auto scene = GmshMeshIO::meshGeometry(g, 0.25);
+  for (const std::string file : {"half_disc_h0.25_v41.msh", "half_disc_h0.25_v22.msh"}) {
+    auto m = GmshMeshIO::readFile(dataDir + "/" + file, 2);
+    out << file << ": " << m->numElements() << " elements, measure " << m->measure() << "\n";
+    TEST_ASSERT(m->boundaryNames() == std::vector<std::string>({"Top", "Arc"}));
+    TEST_EQUALITY(m->numElements(), scene->numElements());
+    TEST_FLOATING_EQUALITY(m->measure(), scene->measure(), 1e-12);
+    TEST_FLOATING_EQUALITY(m->boundaryMeasure("Top"), 2.0, 1e-12);  // analytic: the diameter
+    TEST_FLOATING_EQUALITY(m->boundaryMeasure("Arc"), scene->boundaryMeasure("Arc"), 1e-12);
+    TEST_COMPARE(std::abs(m->measure() - M_PI / 2), <, 0.02);
+  }
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, MissingFileNamesTheFile)
+{
+  expectInputError([] { GmshMeshIO::readFile("no/such/mesh.msh", 2); },
+                   {"no/such/mesh.msh", "cannot be opened"}, success, out);
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, CorruptFilesNameTheFile)
+{
+  // Stored truncated copy of the 4.1 file (cut inside the $Elements section).
+  expectInputError([] { GmshMeshIO::readFile(dataDir + "/half_disc_truncated.msh", 2); },
+                   {"half_disc_truncated.msh"}, success, out);
+  // Not a mesh at all.
+  const std::string garbage = writeFile("garbage.msh", "this is not a mesh\n");
+  expectInputError([&] { GmshMeshIO::readFile(garbage, 2); }, {"garbage.msh"}, success, out);
+  // Wrong dimension.
+  expectInputError([] { GmshMeshIO::readFile(dataDir + "/half_disc_h0.25_v41.msh", 3); },
+                   {"half_disc_h0.25_v41.msh", "dimension 2", "Problem/Dimension = 3"}, success, out);
+}
+
+const char* kHeader = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+
+TEUCHOS_UNIT_TEST(GmshFile, UnsupportedAndInvalidElementsNameTheEntity)
+{
+  // A quadrangle (Gmsh type 3).
+  std::string quad = std::string(kHeader) +
+                     "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+                     "$Elements\n1\n7 3 2 1 1 1 2 3 4\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("quad.msh", quad), 2); },
+                   {"quad.msh", "unsupported element type", "element 7"}, success, out);
+  // A degenerate triangle.
+  std::string flat = std::string(kHeader) +
+                     "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 2 0 0\n$EndNodes\n"
+                     "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("flat.msh", flat), 2); },
+                   {"flat.msh", "degenerate element 0"}, success, out);
+  // Three triangles on one edge (non-conforming).
+  std::string fan = std::string(kHeader) +
+                    "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 2 0\n$EndNodes\n"
+                    "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 2 1 4\n3 2 2 1 1 1 2 5\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("fan.msh", fan), 2); },
+                   {"fan.msh", "shared by more than two elements"}, success, out);
+  // Hanging node: node 5 in the middle of edge 1-2.
+  std::string hang = std::string(kHeader) +
+                     "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 0 0\n$EndNodes\n"
+                     "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 4 5\n3 2 2 1 1 5 4 2\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("hang.msh", hang), 2); },
+                   {"hang.msh", "hanging node"}, success, out);
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, UnnamedPhysicalGroupsAndUntaggedFaces)
+{
+  // Two triangles; the bottom edge is in physical group 5 (no name), the rest untagged.
+  std::string sq = std::string(kHeader) +
+                   "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+                   "$Elements\n3\n1 1 2 5 1 1 2\n2 2 2 1 1 1 2 3\n3 2 2 1 1 1 3 4\n$EndElements\n";
+  auto m = GmshMeshIO::readFile(writeFile("square.msh", sq), 2);
+  TEST_ASSERT(m->boundaryNames() == std::vector<std::string>({"5", "Unnamed"}));
+  TEST_FLOATING_EQUALITY(m->boundaryMeasure("5"), 1.0, 1e-14);
+  TEST_FLOATING_EQUALITY(m->boundaryMeasure("Unnamed"), 3.0, 1e-14);
+}
+
+}  // namespace

@@ -1,0 +1,118 @@
+// MeshFactory: the Mesh sublist (keys, defaults, errors) and the scenes it builds. Reference
+// values are analytic (areas/volumes and side lengths of the boxes).
+#include "MeshTestUtils.hpp"
+
+#include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
+#include <sc/mesh/MeshFactory.hpp>
+
+#include <Teuchos_UnitTestHarness.hpp>
+
+namespace {
+
+using namespace sc::mesh;
+using sc::mesh::test::contains;
+
+std::string errorOf(const std::function<void()>& f)
+{
+  try {
+    f();
+  } catch (const sc::core::InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, ValidParametersHaveDefaultsAndDocs)
+{
+  auto valid = MeshFactory::getValidParameters();
+  for (const std::string key : {"Source", "Initial mesh size", "Uniform refinements",
+                                "Project boundary", "Radius", "File", "Lower corner",
+                                "Upper corner"}) {
+    TEST_ASSERT(valid->isParameter(key));
+    if (valid->isParameter(key)) TEST_ASSERT(!valid->getEntry(key).docString().empty());
+  }
+  TEST_EQUALITY(valid->numParams(), 8);
+  TEST_EQUALITY(valid->get<std::string>("Source"), std::string("Half disc"));
+  TEST_EQUALITY(valid->get<bool>("Project boundary"), true);
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, UnknownSourceListsTheChoices)
+{
+  Teuchos::ParameterList p;
+  p.set("Source", "Half disk");
+  const std::string msg = errorOf([&] { MeshFactory::build(p, 2); });
+  out << msg << "\n";
+  for (const auto& s : MeshFactory::sources()) TEST_ASSERT(contains(msg, s));
+  TEST_ASSERT(contains(msg, "Mesh/Source"));
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, NonPositiveMeshSizeNamesTheKey)
+{
+  for (double h : {0.0, -1.0}) {
+    Teuchos::ParameterList p;
+    p.set("Initial mesh size", h);
+    const std::string msg = errorOf([&] { MeshFactory::build(p, 2); });
+    out << msg << "\n";
+    TEST_ASSERT(contains(msg, "Mesh/Initial mesh size"));
+  }
+  Teuchos::ParameterList p;
+  p.set("Uniform refinements", -1);
+  TEST_ASSERT(contains(errorOf([&] { MeshFactory::build(p, 2); }), "Mesh/Uniform refinements"));
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, SceneAndDimensionMustAgree)
+{
+  Teuchos::ParameterList p;
+  p.set("Source", "Half ball");
+  const std::string msg = errorOf([&] { MeshFactory::build(p, 2); });
+  out << msg << "\n";
+  TEST_ASSERT(contains(msg, "Half ball") && contains(msg, "Problem/Dimension = 2"));
+  p.set("Source", "Gmsh file");
+  TEST_ASSERT(contains(errorOf([&] { MeshFactory::build(p, 2); }), "Mesh/File"));
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, BoxScenes)
+{
+  Teuchos::ParameterList p;
+  p.set("Source", "Unit square");
+  p.set("Initial mesh size", 0.25);
+  p.set("Uniform refinements", 1);
+  auto sq = MeshFactory::build(p, 2)->mesh();
+  TEST_ASSERT(sq->boundaryNames() == std::vector<std::string>({"Left", "Right", "Bottom", "Top"}));
+  TEST_FLOATING_EQUALITY(sq->measure(), 1.0, 1e-13);
+  for (const auto& n : sq->boundaryNames()) TEST_FLOATING_EQUALITY(sq->boundaryMeasure(n), 1.0, 1e-13);
+
+  p.set("Source", "Rectangle");
+  p.set("Lower corner", Teuchos::Array<double>(std::vector<double>{-1.0, 0.0}));
+  p.set("Upper corner", Teuchos::Array<double>(std::vector<double>{2.0, 0.5}));
+  auto re = MeshFactory::build(p, 2)->mesh();
+  TEST_FLOATING_EQUALITY(re->measure(), 1.5, 1e-13);
+  TEST_FLOATING_EQUALITY(re->boundaryMeasure("Bottom"), 3.0, 1e-13);
+  TEST_FLOATING_EQUALITY(re->boundaryMeasure("Left"), 0.5, 1e-13);
+
+  Teuchos::ParameterList c;
+  c.set("Source", "Unit cube");
+  c.set("Initial mesh size", 0.5);
+  auto cube = MeshFactory::build(c, 3)->mesh();
+  TEST_ASSERT(cube->boundaryNames() ==
+              std::vector<std::string>({"Left", "Right", "Front", "Back", "Bottom", "Top"}));
+  TEST_FLOATING_EQUALITY(cube->measure(), 1.0, 1e-13);
+  for (const auto& n : cube->boundaryNames()) TEST_FLOATING_EQUALITY(cube->boundaryMeasure(n), 1.0, 1e-13);
+  // Front is y = 0: its outward normal is -e_y.
+  const int f = cube->boundaryFacesOf("Front").front();
+  TEST_FLOATING_EQUALITY(cube->faceNormal(f)[1], -1.0, 1e-13);
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, GmshFileSource)
+{
+  Teuchos::ParameterList p;
+  p.set("Source", "Gmsh file");
+  p.set("File", std::string(SC_MESH_TEST_DATA) + "/half_disc_h0.25_v41.msh");
+  auto r = MeshFactory::build(p, 2);
+  TEST_ASSERT(r->geometry().is_null());
+  TEST_ASSERT(r->mesh()->hasBoundary("Arc"));
+  TEST_COMPARE(std::abs(r->mesh()->measure() - M_PI / 2), <, 0.02);
+}
+
+}  // namespace

@@ -1,0 +1,227 @@
+// BisectionRefiner: uniform and local refinement, conformity, boundary projection, shape
+// regularity. Reference values: π/2 and 2π/3 (analytic measures of the half disc and half ball),
+// element-count factors 4 and 8 (definition of one uniform level), NVB's similarity-class bound
+// (at most 4 classes per initial triangle: Sewell 1972, Mitchell 1991) and AMP's finitely many
+// classes (Arnold, Mukherjee, Pouly 2000).
+#include "MeshTestUtils.hpp"
+
+#include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/GmshMeshIO.hpp>
+#include <sc/mesh/HalfBallGeometry.hpp>
+#include <sc/mesh/HalfDiscGeometry.hpp>
+
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <cmath>
+
+namespace {
+
+using namespace sc::mesh;
+using sc::mesh::test::conformityProblem;
+using sc::mesh::test::fittedSlope;
+using sc::mesh::test::similarityClasses;
+
+Teuchos::RCP<BisectionRefiner> makeRefiner(Teuchos::RCP<const Geometry> g, double h, bool project)
+{
+  return Teuchos::rcp(new BisectionRefiner(GmshMeshIO::meshGeometry(*g, h), g, project));
+}
+
+TEUCHOS_UNIT_TEST(Refinement, UniformHalfDiscMultipliesByFourAndStaysConforming)
+{
+  auto r = makeRefiner(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.3, true);
+  TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+  for (int level = 1; level <= 4; ++level) {
+    const int ne = r->mesh()->numElements();
+    const double top = r->mesh()->boundaryMeasure("Top");
+    const std::size_t nTop = r->mesh()->boundaryFacesOf("Top").size();
+    const auto& step = r->refineUniformly();
+    TEST_EQUALITY(r->mesh()->numElements(), 4 * ne);
+    TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+    TEST_EQUALITY(r->mesh()->boundaryFacesOf("Top").size(), 2 * nTop);
+    TEST_FLOATING_EQUALITY(r->mesh()->boundaryMeasure("Top"), top, 1e-13);  // flat: exact
+    for (int p = 0; p < ne; ++p) TEST_EQUALITY(step.childrenPtr[p + 1] - step.childrenPtr[p], 4);
+    // New vertices sit at edge midpoints (interior ones) or on the circle (Arc ones).
+    for (std::size_t i = 0; i < step.newVertexParents.size(); ++i) {
+      const auto [a, b] = step.newVertexParents[i];
+      TEST_ASSERT(a < step.numVerticesBefore && b < step.numVerticesBefore);
+    }
+  }
+  // Every vertex on Arc lies on the circle (projection), to rounding.
+  const auto& m = *r->mesh();
+  double worst = 0;
+  for (int f : m.boundaryFacesOf("Arc"))
+    for (int i = 0; i < 2; ++i) {
+      const double* x = m.vertex(m.faceVertices(f)[i]);
+      worst = std::max(worst, std::abs(std::hypot(x[0], x[1] - 1) - 1));
+    }
+  TEST_COMPARE(worst, <, 1e-14);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, UniformHalfBallMultipliesByEightAndStaysConforming)
+{
+  auto r = makeRefiner(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.5, true);
+  TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+  for (int level = 1; level <= 2; ++level) {
+    const int ne = r->mesh()->numElements();
+    r->refineUniformly();
+    out << "level " << level << ": " << ne << " -> " << r->mesh()->numElements() << "\n";
+    TEST_EQUALITY(r->mesh()->numElements(), 8 * ne);
+    TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+  }
+}
+
+// |Ω_h| → π/2 at rate h² with projection (the polygon's chords lose O(h²) per unit length); h
+// halves per uniform level.
+TEUCHOS_UNIT_TEST(Refinement, HalfDiscMeasureConvergesAtRateTwo)
+{
+  auto r = makeRefiner(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.4, true);
+  std::vector<double> h, err;
+  for (int level = 0; level <= 5; ++level) {
+    if (level > 0) r->refineUniformly();
+    h.push_back(0.4 / std::pow(2.0, level));
+    err.push_back(std::abs(M_PI / 2 - r->mesh()->measure()));
+    out << "level " << level << " elements " << r->mesh()->numElements() << " error " << err.back() << "\n";
+  }
+  const double slope = fittedSlope(h, err);
+  out << "fitted rate " << slope << "\n";
+  TEST_COMPARE(slope, >=, 1.8);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, HalfDiscWithoutProjectionKeepsThePolygon)
+{
+  auto r = makeRefiner(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.4, false);
+  const double m0 = r->mesh()->measure();
+  for (int level = 1; level <= 4; ++level) {
+    r->refineUniformly();
+    TEST_FLOATING_EQUALITY(r->mesh()->measure(), m0, 1e-13);  // stored: initial polygon
+  }
+  TEST_COMPARE(std::abs(m0 - M_PI / 2), >, 1e-3);  // the polygon is visibly not the disc
+}
+
+TEUCHOS_UNIT_TEST(Refinement, HalfBallMeasureConverges)
+{
+  auto r = makeRefiner(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.5, true);
+  auto flat = makeRefiner(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.5, false);
+  const double v0 = flat->mesh()->measure();
+  std::vector<double> h, err;
+  for (int level = 0; level <= 2; ++level) {
+    if (level > 0) {
+      r->refineUniformly();
+      flat->refineUniformly();
+      TEST_FLOATING_EQUALITY(flat->mesh()->measure(), v0, 1e-12);
+    }
+    h.push_back(0.5 / std::pow(2.0, level));
+    err.push_back(std::abs(2 * M_PI / 3 - r->mesh()->measure()));
+    out << "level " << level << " elements " << r->mesh()->numElements() << " error " << err.back() << "\n";
+  }
+  const double slope = fittedSlope(h, err);
+  out << "fitted rate " << slope << "\n";
+  TEST_COMPARE(slope, >=, 1.8);
+}
+
+// Marks the elements around vertex v (kept through refinement: vertices are never renumbered).
+std::vector<int> elementsAround(const SimplexMesh& m, int v)
+{
+  auto [b, e] = m.vertexElements(v);
+  return std::vector<int>(b, e);
+}
+
+int nearestVertex(const SimplexMesh& m, const std::array<double, 3>& p)
+{
+  int best = 0;
+  double bd = 1e300;
+  for (int v = 0; v < m.numVertices(); ++v) {
+    double d = 0;
+    for (int k = 0; k < m.dim(); ++k) d += std::pow(m.vertex(v)[k] - p[k], 2);
+    if (d < bd) bd = d, best = v;
+  }
+  return best;
+}
+
+void localRefinementAtPoint(Teuchos::RCP<const Geometry> g, double h, int cycles, bool project,
+                            double& minAngle0, double& minAngle, std::size_t& classes0,
+                            std::size_t& classes, int& ne0, int& ne, Teuchos::FancyOStream& out,
+                            bool& success)
+{
+  auto r = makeRefiner(g, h, project);
+  const std::array<double, 3> p = g->dim() == 2 ? std::array<double, 3>{0, 0, 0}
+                                                : std::array<double, 3>{0, 0, 0};
+  const int v = nearestVertex(*r->mesh(), p);
+  minAngle0 = r->mesh()->minAngleDeg();
+  classes0 = similarityClasses(*r->mesh());
+  ne0 = r->mesh()->numElements();
+  minAngle = minAngle0;
+  for (int c = 0; c < cycles; ++c) {
+    r->refine(elementsAround(*r->mesh(), v));
+    minAngle = std::min(minAngle, r->mesh()->minAngleDeg());
+  }
+  classes = similarityClasses(*r->mesh());
+  ne = r->mesh()->numElements();
+  TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+  // The refined corner shrinks geometrically.
+  double hmin = 1e300;
+  for (int e : elementsAround(*r->mesh(), v)) hmin = std::min(hmin, r->mesh()->elementDiameter(e));
+  out << "cycles " << cycles << ": elements " << ne0 << " -> " << ne << ", min angle " << minAngle0
+      << " -> " << minAngle << ", similarity classes " << classes0 << " -> " << classes
+      << ", smallest element at the point " << hmin << "\n";
+}
+
+TEUCHOS_UNIT_TEST(Refinement, LocalRefinement2DKeepsShapeRegularity)
+{
+  double a0, a;
+  std::size_t c0, c;
+  int n0, n;
+  auto g = Teuchos::rcp(new HalfDiscGeometry(1.0));
+  // Straight boundaries: exact similarity classes (NVB bound 4 per initial triangle).
+  localRefinementAtPoint(g, 0.25, 25, false, a0, a, c0, c, n0, n, out, success);
+  TEST_COMPARE(a, >=, 0.5 * a0);
+  TEST_COMPARE(static_cast<int>(c), <=, 4 * n0);
+  // With projection onto the arc (shapes near the arc vary, so only the angle bound).
+  localRefinementAtPoint(g, 0.25, 25, true, a0, a, c0, c, n0, n, out, success);
+  TEST_COMPARE(a, >=, 0.5 * a0);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, LocalRefinement3DKeepsShapeRegularity)
+{
+  double a0, a;
+  std::size_t c0, c;
+  int n0, n;
+  auto g = Teuchos::rcp(new HalfBallGeometry(1.0));
+  localRefinementAtPoint(g, 0.5, 10, false, a0, a, c0, c, n0, n, out, success);
+  TEST_COMPARE(a, >=, 0.5 * a0);
+  // AMP: finitely many classes; measured per initial tetrahedron well below 36.
+  TEST_COMPARE(static_cast<double>(c), <=, 36.0 * n0);
+  localRefinementAtPoint(g, 0.5, 10, true, a0, a, c0, c, n0, n, out, success);
+  TEST_COMPARE(a, >=, 0.5 * a0);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, HistoryMapsChildrenToParents)
+{
+  auto r = makeRefiner(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.3, true);
+  const auto before = r->mesh();
+  const auto& step = r->refine({0, 3});
+  const auto& m = *r->mesh();
+  TEST_EQUALITY(static_cast<int>(step.elementParent.size()), m.numElements());
+  TEST_EQUALITY(step.numElementsBefore, before->numElements());
+  // Children tile their parent: measures add up.
+  for (int p = 0; p < before->numElements(); ++p) {
+    double sum = 0;
+    for (int k = step.childrenPtr[p]; k < step.childrenPtr[p + 1]; ++k) {
+      TEST_EQUALITY(step.elementParent[step.children[k]], p);
+      sum += m.elementMeasure(step.children[k]);
+    }
+    // Arc projection can change a boundary parent's area; compare on interior parents only.
+    bool onArc = false;
+    for (int i = 0; i < 3; ++i) {
+      const int f = before->elementFaces(p)[i];
+      onArc |= before->isBoundaryFace(f) && before->boundaryName(before->faceBoundaryId(f)) == "Arc";
+    }
+    if (!onArc) TEST_FLOATING_EQUALITY(sum, before->elementMeasure(p), 1e-12);
+  }
+  TEST_COMPARE(step.childrenPtr[1] - step.childrenPtr[0], >=, 2);
+  TEST_EQUALITY(static_cast<int>(step.newVertexParents.size()),
+                m.numVertices() - before->numVertices());
+  TEST_EQUALITY(conformityProblem(m), std::string());
+}
+
+}  // namespace
