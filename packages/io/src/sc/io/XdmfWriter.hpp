@@ -6,6 +6,23 @@
 //
 // Crash safety: each .h5 is written under a temporary name and renamed once closed; the .xdmf is
 // rewritten atomically after that, so it only ever references complete .h5 files.
+//
+// Usage (every rank, once per cycle):
+//   sc::io::XdmfWriter writer(comm, "output", "solution");
+//   sc::io::GridPiece domain("domain", sc::io::CellType::Triangle, 2);
+//   domain.coordinates = ...;   // owned vertices, x y x y ...
+//   domain.connectivity = ...;  // owned triangles, global vertex ids
+//   domain.addPointField("displacement", sc::io::FieldKind::Vector, u);
+//   domain.addCellField("stress", sc::io::FieldKind::SymmetricTensor, sigma);
+//   sc::io::GridPiece boundary("boundary", sc::io::CellType::Line, 2);
+//   boundary.geometryFrom = "domain";           // facets index the domain's vertices
+//   boundary.connectivity = ...;                // owned facets (may be empty)
+//   boundary.addCellField("boundary_id", ids);  // std::vector<int>
+//   boundary.setBoundaryNames({{1, "contact"}, {2, "clamped"}});
+//   writer.writeStep(cycle, {domain, boundary});
+//
+// Limit: validation is collective, but a failure inside HDF5 on one rank only (not the usual
+// case: the library fails collectively) cannot be reported without the other ranks waiting.
 
 #include <sc/io/GridPiece.hpp>
 
