@@ -12,10 +12,8 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <sstream>
 #include <unistd.h>
 
