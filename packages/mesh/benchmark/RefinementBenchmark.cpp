@@ -21,11 +21,13 @@ void run(const Teuchos::RCP<const Geometry>& g, double h0, long maxElements)
 {
   const int factor = g->dim() == 2 ? 4 : 8;
   BisectionRefiner r(GmshMeshIO::meshGeometry(*g, h0), g, true);
-  std::printf("%s (initial h = %g): %d elements\n", g->sceneName().c_str(), h0,
-              r.mesh()->numElements());
+  std::printf("%s (initial h = %g): %d elements, min angle %.3f deg\n", g->sceneName().c_str(),
+              h0, r.mesh()->numElements(), r.mesh()->minAngleDeg());
   std::printf("  %10s %10s %12s %12s %14s %14s\n", "elements", "vertices", "bisect [s]",
               "rebuild [s]", "created/s", "incl. rebuild");
-  while (static_cast<long>(r.mesh()->numElements()) * factor <= maxElements * 1.5) {
+  // Stop at the first level reaching maxElements, or before one that would exceed 2 x maxElements.
+  while (r.mesh()->numElements() < maxElements &&
+         static_cast<long>(r.mesh()->numElements()) * factor <= 2 * maxElements) {
     const auto& s = r.refineUniformly();
     const double created = static_cast<double>(r.mesh()->numElements() - s.numElementsBefore);
     std::printf("  %10d %10d %12.3f %12.3f %14.3e %14.3e\n", r.mesh()->numElements(),
@@ -50,6 +52,6 @@ int main(int argc, char** argv)
     }
   }
   if (dim != 3) run(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.1, maxElements);
-  if (dim != 2) run(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.25, maxElements);
+  if (dim != 2) run(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.19, maxElements);
   return 0;
 }

@@ -7,6 +7,8 @@
 #include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
 
+#include <Teuchos_CommHelpers.hpp>
+
 namespace sc::mesh {
 
 const std::vector<std::string>& MeshFactory::sources()
@@ -95,11 +97,11 @@ Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::Parameter
   return Teuchos::null;  // Gmsh file
 }
 
-Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
-                                                  int dimension)
+namespace {
+
+Teuchos::RCP<SimplexMesh> initialMesh(const Teuchos::ParameterList& p, int dimension,
+                                      const Teuchos::RCP<const Geometry>& geometry)
 {
-  const Teuchos::ParameterList p = validated(meshList);
-  auto geometry = buildGeometry(p, dimension);
   Teuchos::RCP<SimplexMesh> initial;
   if (geometry.is_null()) {
     const std::string file = p.get<std::string>("File");
@@ -109,9 +111,85 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   } else {
     initial = GmshMeshIO::meshGeometry(*geometry, p.get<double>("Initial mesh size"));
   }
+  return initial;
+}
+
+template <class T>
+void broadcastVector(const Teuchos::Comm<int>& comm, std::vector<T>& v)
+{
+  int n = static_cast<int>(v.size());
+  Teuchos::broadcast<int, int>(comm, 0, &n);
+  v.resize(n);
+  if (n > 0) Teuchos::broadcast<int, T>(comm, 0, n, v.data());
+}
+
+void broadcastString(const Teuchos::Comm<int>& comm, std::string& s)
+{
+  std::vector<char> c(s.begin(), s.end());
+  broadcastVector(comm, c);
+  s.assign(c.begin(), c.end());
+}
+
+Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
+                                      Teuchos::RCP<const SimplexMesh> initial,
+                                      Teuchos::RCP<const Geometry> geometry)
+{
   auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
   for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
   return refiner;
+}
+
+}  // namespace
+
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
+                                                  int dimension, const Teuchos::Comm<int>& comm)
+{
+  if (comm.getSize() == 1) return build(meshList, dimension);
+  const Teuchos::ParameterList p = validated(meshList);  // same on every rank: throws everywhere
+  auto geometry = buildGeometry(p, dimension);
+  std::vector<double> coords;
+  std::vector<int> elems, bfv, bpart;
+  std::string names, origin, error;
+  if (comm.getRank() == 0) {
+    try {
+      auto m = initialMesh(p, dimension, geometry);
+      coords = m->coordinates();
+      elems = m->elementVertices();
+      for (int f : m->boundaryFaces()) {
+        bfv.insert(bfv.end(), m->faceVertices(f), m->faceVertices(f) + dimension);
+        bpart.push_back(m->faceBoundaryId(f));
+      }
+      for (const auto& n : m->boundaryNames()) names += n + '\n';
+      origin = m->origin();
+    } catch (const sc::core::InputError& e) {
+      error = std::string("I") + e.what();
+    } catch (const std::exception& e) {
+      error = std::string("X") + e.what();
+    }
+  }
+  broadcastString(comm, error);
+  SC_THROW_IF(!error.empty() && error[0] == 'I', sc::core::InputError, error.substr(1));
+  SC_THROW_IF(!error.empty(), sc::core::InternalError, error.substr(1));
+  broadcastVector(comm, coords);
+  broadcastVector(comm, elems);
+  broadcastVector(comm, bfv);
+  broadcastVector(comm, bpart);
+  broadcastString(comm, names);
+  broadcastString(comm, origin);
+  std::vector<std::string> nameList;
+  for (std::size_t a = 0, b; (b = names.find('\n', a)) != std::string::npos; a = b + 1)
+    nameList.push_back(names.substr(a, b - a));
+  auto mesh = Teuchos::rcp(new SimplexMesh(dimension, std::move(coords), std::move(elems), bfv,
+                                           bpart, nameList, origin));
+  return finish(p, mesh, geometry);
+}
+
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
+                                                  int dimension)
+{
+  const Teuchos::ParameterList p = validated(meshList);
+  auto geometry = buildGeometry(p, dimension);
+  return finish(p, initialMesh(p, dimension, geometry), geometry);
 }
 
 }  // namespace sc::mesh

@@ -55,6 +55,31 @@ SimplexMesh::SimplexMesh(int dim, std::vector<double> coordinates, std::vector<i
   assignBoundaryParts(boundaryFaceVertices, boundaryFacePart);
   checkHangingNodes();
   buildVertexElements();
+  buildEdges();
+}
+
+void SimplexMesh::buildEdges()
+{
+  const int ne = numElements();
+  if (dim_ == 2) {  // edges are the faces; shards edge s = side s
+    edgeVerts_ = faceVerts_;
+    elemEdges_.resize(static_cast<std::size_t>(ne) * 3);
+    for (int e = 0; e < ne; ++e)
+      for (int s = 0; s < 3; ++s) elemEdges_[3 * static_cast<std::size_t>(e) + s] = sideFace(e, s);
+    return;
+  }
+  constexpr int pairs[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  HashIndexMap<std::uint64_t> map(static_cast<std::size_t>(numVertices()) * 7);
+  elemEdges_.resize(static_cast<std::size_t>(ne) * 6);
+  for (int e = 0; e < ne; ++e) {
+    const int* v = elementVertices(e);
+    for (int k = 0; k < 6; ++k) {
+      const int a = std::min(v[pairs[k][0]], v[pairs[k][1]]), b = std::max(v[pairs[k][0]], v[pairs[k][1]]);
+      auto [val, inserted] = map.insert(edgeKey(a, b), numEdges());
+      if (inserted) edgeVerts_.insert(edgeVerts_.end(), {a, b});
+      elemEdges_[6 * static_cast<std::size_t>(e) + k] = *val;
+    }
+  }
 }
 
 double SimplexMesh::signedMeasure(const int* v) const
@@ -102,16 +127,18 @@ void SimplexMesh::orientAndMeasureElements()
   elemDiameter_.resize(ne);
   for (int e = 0; e < ne; ++e) {
     int* v = &elemVerts_[static_cast<std::size_t>(e) * nve];
-    double diam = 0;
+    double diam2 = 0;
     for (int i = 0; i < nve; ++i)
       for (int j = i + 1; j < nve; ++j) {
-        double d[3];
+        double d[3], s = 0;
         sub(vertex(v[i]), vertex(v[j]), dim_, d);
-        diam = std::max(diam, norm(d, dim_));
+        for (int k = 0; k < dim_; ++k) s += d[k] * d[k];
+        diam2 = std::max(diam2, s);
       }
+    const double diam = std::sqrt(diam2);
     double m = signedMeasure(v);
     // Relative test: a sliver whose measure is 1e-12 of its diameter's cube is numerically flat.
-    SC_THROW_IF(!(std::abs(m) > 1e-12 * std::pow(diam, dim_)), sc::core::InputError,
+    SC_THROW_IF(!(std::abs(m) > 1e-12 * (dim_ == 2 ? diam2 : diam2 * diam)), sc::core::InputError,
                 origin_ << ": degenerate " << describeElement(e) << " has measure " << m);
     if (m < 0) {  // reorder to positive orientation (file meshes may come clockwise)
       std::swap(v[dim_ - 1], v[dim_]);
@@ -241,14 +268,16 @@ void SimplexMesh::assignBoundaryParts(const std::vector<int>& bfv, const std::ve
               origin_ << ": boundary face arrays have inconsistent sizes");
   // Lookup of the listed faces among the mesh faces by key.
   std::vector<int> faceOf(bpart.size(), -1);
+  std::size_t nb = 0;
+  for (int f = 0; f < nf; ++f) nb += isBoundaryFace(f);
   if (dim_ == 2) {
-    HashIndexMap<std::uint64_t> map(nf);
+    HashIndexMap<std::uint64_t> map(nb);
     for (int f = 0; f < nf; ++f)
       if (isBoundaryFace(f)) map.insert(edgeKey(faceVerts_[2 * f], faceVerts_[2 * f + 1]), f);
     for (std::size_t i = 0; i < bpart.size(); ++i)
       if (const int* p = map.find(edgeKey(bfv[2 * i], bfv[2 * i + 1]))) faceOf[i] = *p;
   } else {
-    HashIndexMap<FaceKey> map(nf);
+    HashIndexMap<FaceKey> map(nb);
     for (int f = 0; f < nf; ++f)
       if (isBoundaryFace(f)) {
         const int* v = faceVertices(f);
@@ -461,14 +490,7 @@ long SimplexMesh::eulerCharacteristic() const
 {
   const long V = numVertices(), T = numElements(), F = numFaces();
   if (dim_ == 2) return V - F + T;
-  HashIndexMap<std::uint64_t> edges(static_cast<std::size_t>(V) * 7);
-  const int pairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  for (int e = 0; e < numElements(); ++e) {
-    const int* v = elementVertices(e);
-    for (const auto& p : pairs) edges.insert(edgeKey(v[p[0]], v[p[1]]), 0);
-  }
-  const long E = static_cast<long>(edges.size());
-  return V - E + F - T;
+  return V - numEdges() + F - T;
 }
 
 }  // namespace sc::mesh

@@ -3,7 +3,9 @@
 // every face neighbour.
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
+#include <sc/core/Error.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
+#include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -11,6 +13,7 @@
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include <algorithm>
+#include <cstring>
 
 namespace {
 
@@ -21,7 +24,7 @@ Teuchos::RCP<const SimplexMesh> testMesh()
   static Teuchos::RCP<const SimplexMesh> mesh;
   if (mesh.is_null()) {
     auto g = Teuchos::rcp(new HalfDiscGeometry(1.0));
-    BisectionRefiner r(GmshMeshIO::meshGeometry(*g, 0.1), g, true);
+    BisectionRefiner r(GmshMeshIO::meshGeometry(*g, 0.07), g, true);
     r.refineUniformly();
     mesh = r.mesh();
   }
@@ -87,8 +90,34 @@ TEUCHOS_UNIT_TEST(Partitioning, OwnedAndGhostElementsPerRank)
       const int other = fe[0] == e ? fe[1] : fe[0];
       if (other >= 0) TEST_ASSERT(present[other]);
     }
-  if (comm->getSize() == 1) TEST_ASSERT(mine.ghosts.empty());
-  else TEST_ASSERT(!mine.ghosts.empty());
+  if (comm->getSize() == 1) {
+    TEST_ASSERT(mine.ghosts.empty());
+  } else {
+    TEST_ASSERT(!mine.ghosts.empty());
+  }
+}
+
+// MeshFactory::build with a communicator: rank 0 meshes, every rank gets the identical mesh;
+// an input error on rank 0 is thrown on every rank.
+TEUCHOS_UNIT_TEST(Partitioning, FactoryBroadcastsTheInitialMesh)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  Teuchos::ParameterList p;
+  p.set("Source", "Half ball");
+  p.set("Initial mesh size", 0.4);
+  p.set("Uniform refinements", 1);
+  auto r = MeshFactory::build(p, 3, *comm);
+  const auto& m = *r->mesh();
+  TEST_ASSERT(identicalOnAllRanks(*comm, m.elementVertices()));
+  std::vector<int> bits(m.coordinates().size() * 2);
+  std::memcpy(bits.data(), m.coordinates().data(), bits.size() * sizeof(int));
+  TEST_ASSERT(identicalOnAllRanks(*comm, bits));
+  TEST_ASSERT(m.boundaryNames() == std::vector<std::string>({"Top", "Cap"}));
+
+  Teuchos::ParameterList bad;
+  bad.set("Source", "Gmsh file");
+  bad.set("File", "missing-on-every-rank.msh");
+  TEST_THROW(MeshFactory::build(bad, 2, *comm), sc::core::InputError);
 }
 
 }  // namespace

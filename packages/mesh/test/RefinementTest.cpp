@@ -138,61 +138,77 @@ int nearestVertex(const SimplexMesh& m, const std::array<double, 3>& p)
   return best;
 }
 
-void localRefinementAtPoint(Teuchos::RCP<const Geometry> g, double h, int cycles, bool project,
-                            double& minAngle0, double& minAngle, std::size_t& classes0,
-                            std::size_t& classes, int& ne0, int& ne, Teuchos::FancyOStream& out,
-                            bool& success)
+struct LocalRun {
+  int elements0 = 0, elements = 0;
+  double minAngle0 = 0, minAngle = 180, minAngleRefined = 180;  // over all cycles
+  std::size_t classes0 = 0, classesMid = 0, classes = 0;        // initial, half-way, final
+};
+
+// `cycles` times: bisect the elements around the vertex nearest to the boundary point p.
+LocalRun localRefinementAtPoint(Teuchos::RCP<const Geometry> g, double h, int cycles, bool project,
+                                const std::array<double, 3>& p, Teuchos::FancyOStream& out,
+                                bool& success)
 {
+  LocalRun run;
   auto r = makeRefiner(g, h, project);
-  const std::array<double, 3> p = g->dim() == 2 ? std::array<double, 3>{0, 0, 0}
-                                                : std::array<double, 3>{0, 0, 0};
   const int v = nearestVertex(*r->mesh(), p);
-  minAngle0 = r->mesh()->minAngleDeg();
-  classes0 = similarityClasses(*r->mesh());
-  ne0 = r->mesh()->numElements();
-  minAngle = minAngle0;
-  for (int c = 0; c < cycles; ++c) {
+  run.minAngle0 = run.minAngle = r->mesh()->minAngleDeg();
+  run.classes0 = similarityClasses(*r->mesh());
+  run.elements0 = r->mesh()->numElements();
+  for (int c = 1; c <= cycles; ++c) {
     r->refine(elementsAround(*r->mesh(), v));
-    minAngle = std::min(minAngle, r->mesh()->minAngleDeg());
+    const auto& m = *r->mesh();
+    run.minAngle = std::min(run.minAngle, m.minAngleDeg());
+    for (int e = 0; e < m.numElements(); ++e)
+      if (r->generation(e) > 0)
+        for (double a : m.elementAnglesDeg(e)) run.minAngleRefined = std::min(run.minAngleRefined, a);
+    if (c == cycles / 2) run.classesMid = similarityClasses(m);
   }
-  classes = similarityClasses(*r->mesh());
-  ne = r->mesh()->numElements();
-  TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
-  // The refined corner shrinks geometrically.
+  const auto& m = *r->mesh();
+  run.classes = similarityClasses(m);
+  run.elements = m.numElements();
+  TEST_EQUALITY(conformityProblem(m), std::string());
+  // The refined patch shrinks geometrically towards the point.
   double hmin = 1e300;
-  for (int e : elementsAround(*r->mesh(), v)) hmin = std::min(hmin, r->mesh()->elementDiameter(e));
-  out << "cycles " << cycles << ": elements " << ne0 << " -> " << ne << ", min angle " << minAngle0
-      << " -> " << minAngle << ", similarity classes " << classes0 << " -> " << classes
-      << ", smallest element at the point " << hmin << "\n";
+  for (int e : elementsAround(m, v)) hmin = std::min(hmin, m.elementDiameter(e));
+  TEST_COMPARE(hmin, <, h * std::pow(0.5, cycles / g->dim() - 1));
+  out << (project ? "projected" : "straight") << ", " << cycles << " cycles: elements "
+      << run.elements0 << " -> " << run.elements << ", min angle " << run.minAngle0 << " -> "
+      << run.minAngle << " (refined elements: " << run.minAngleRefined << "), similarity classes "
+      << run.classes0 << " -> " << run.classesMid << " (half-way) -> " << run.classes
+      << ", patch diameter at the point " << hmin << "\n";
+  return run;
 }
 
+// NVB: angles bounded below, at most 4 similarity classes per initial triangle, and once the
+// patch at the point is self-similar no new classes appear (straight boundary: exact similarity).
 TEUCHOS_UNIT_TEST(Refinement, LocalRefinement2DKeepsShapeRegularity)
 {
-  double a0, a;
-  std::size_t c0, c;
-  int n0, n;
   auto g = Teuchos::rcp(new HalfDiscGeometry(1.0));
-  // Straight boundaries: exact similarity classes (NVB bound 4 per initial triangle).
-  localRefinementAtPoint(g, 0.25, 25, false, a0, a, c0, c, n0, n, out, success);
-  TEST_COMPARE(a, >=, 0.5 * a0);
-  TEST_COMPARE(static_cast<int>(c), <=, 4 * n0);
-  // With projection onto the arc (shapes near the arc vary, so only the angle bound).
-  localRefinementAtPoint(g, 0.25, 25, true, a0, a, c0, c, n0, n, out, success);
-  TEST_COMPARE(a, >=, 0.5 * a0);
+  const std::array<double, 3> p{0, 0, 0};  // bottom of the arc
+  const auto s = localRefinementAtPoint(g, 0.25, 25, false, p, out, success);
+  TEST_COMPARE(s.minAngle, >=, 0.5 * s.minAngle0);
+  TEST_COMPARE(s.minAngleRefined, >=, 0.5 * s.minAngle0);
+  TEST_COMPARE(static_cast<int>(s.classes), <=, 4 * s.elements0);
+  TEST_EQUALITY(s.classes, s.classesMid);
+  // Projection onto the arc perturbs shapes near it (classes grow slowly), angles stay bounded.
+  const auto c = localRefinementAtPoint(g, 0.25, 25, true, p, out, success);
+  TEST_COMPARE(c.minAngle, >=, 0.5 * c.minAngle0);
+  TEST_COMPARE(c.minAngleRefined, >=, 0.5 * c.minAngle0);
 }
 
+// AMP: dihedral angles bounded below, finitely many similarity classes (saturated half-way).
 TEUCHOS_UNIT_TEST(Refinement, LocalRefinement3DKeepsShapeRegularity)
 {
-  double a0, a;
-  std::size_t c0, c;
-  int n0, n;
   auto g = Teuchos::rcp(new HalfBallGeometry(1.0));
-  localRefinementAtPoint(g, 0.5, 10, false, a0, a, c0, c, n0, n, out, success);
-  TEST_COMPARE(a, >=, 0.5 * a0);
-  // AMP: finitely many classes; measured per initial tetrahedron well below 36.
-  TEST_COMPARE(static_cast<double>(c), <=, 36.0 * n0);
-  localRefinementAtPoint(g, 0.5, 10, true, a0, a, c0, c, n0, n, out, success);
-  TEST_COMPARE(a, >=, 0.5 * a0);
+  const std::array<double, 3> p{0, 0, 0};  // bottom of the cap
+  const auto s = localRefinementAtPoint(g, 0.5, 10, false, p, out, success);
+  TEST_COMPARE(s.minAngle, >=, 0.5 * s.minAngle0);
+  TEST_COMPARE(s.minAngleRefined, >=, 0.5 * s.minAngle0);
+  TEST_EQUALITY(s.classes, s.classesMid);
+  const auto c = localRefinementAtPoint(g, 0.5, 10, true, p, out, success);
+  TEST_COMPARE(c.minAngle, >=, 0.5 * c.minAngle0);
+  TEST_COMPARE(c.minAngleRefined, >=, 0.5 * c.minAngle0);
 }
 
 TEUCHOS_UNIT_TEST(Refinement, HistoryMapsChildrenToParents)

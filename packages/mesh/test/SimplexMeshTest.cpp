@@ -139,3 +139,35 @@ TEUCHOS_UNIT_TEST(SimplexMesh, BadMeshesAreInputErrors)
 }
 
 }  // namespace
+
+namespace {
+
+// Shards/Intrepid2 numbering (Shards_BasicTopologies.hpp): tetrahedron sides {0,1,3}, {1,2,3},
+// {0,3,2}, {0,2,1}; edges (0,1), (1,2), (2,0), (0,3), (1,3), (2,3).
+TEUCHOS_UNIT_TEST(SimplexMesh, ShardsSideAndEdgeNumbering)
+{
+  std::vector<double> x = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  sc::mesh::SimplexMesh m(3, x, {0, 1, 2, 3}, {}, {}, {}, "tet");
+  const int sides[4][3] = {{0, 1, 3}, {1, 2, 3}, {0, 2, 3}, {0, 1, 2}};  // sorted
+  for (int s = 0; s < 4; ++s) {
+    const int* fv = m.faceVertices(m.sideFace(0, s));
+    for (int k = 0; k < 3; ++k) TEST_EQUALITY(fv[k], sides[s][k]);
+  }
+  const int edges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};  // sorted
+  TEST_EQUALITY(m.numEdges(), 6);
+  for (int k = 0; k < 6; ++k) {
+    const int* ev = m.edgeVertices(m.elementEdges(0)[k]);
+    TEST_EQUALITY(ev[0], edges[k][0]);
+    TEST_EQUALITY(ev[1], edges[k][1]);
+  }
+  sc::mesh::SimplexMesh t(2, {0, 0, 1, 0, 0, 1}, {0, 1, 2}, {}, {}, {}, "tri");
+  const int tedges[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+  for (int s = 0; s < 3; ++s) {
+    const int* ev = t.edgeVertices(t.elementEdges(0)[s]);
+    TEST_EQUALITY(ev[0], tedges[s][0]);
+    TEST_EQUALITY(ev[1], tedges[s][1]);
+    TEST_EQUALITY(t.sideFace(0, s), t.elementEdges(0)[s]);
+  }
+}
+
+}  // namespace

@@ -5,6 +5,7 @@
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/Geometry.hpp>
 
+#include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
@@ -27,6 +28,12 @@ public:
   /// domain, apply Mesh/Uniform refinements, and return the refiner holding the current mesh.
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
                                               int dimension);
+
+  /// The same for a run on `comm`: rank 0 builds the initial mesh (Gmsh) and broadcasts it, so
+  /// every rank holds the identical replicated mesh (and then identical refinements). An
+  /// InputError on rank 0 is rethrown on every rank with the same message.
+  static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
+                                              int dimension, const Teuchos::Comm<int>& comm);
 
   /// The scene geometry of a validated list (null for "Gmsh file").
   static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,

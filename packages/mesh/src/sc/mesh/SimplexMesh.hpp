@@ -7,7 +7,12 @@
 //   (DESIGN §2) take the element's vertex global ids in this order.
 // - Local face i of an element is the face opposite local vertex i (for tetrahedra: the vertices
 //   {0,1,2,3} \ {i} in increasing local order; for triangles: the edge {0,1,2} \ {i}).
-// - Faces (edges in 2D, triangles in 3D) store their vertices sorted by increasing global id.
+// - Intrepid2/shards numbering is available through sideFace() and elementEdges(): shards side s
+//   of Triangle<3> is the edge (s, s+1 mod 3), i.e. opposite local vertex {2, 0, 1}[s]; sides of
+//   Tetrahedron<4> are {0,1,3}, {1,2,3}, {0,3,2}, {0,2,1}, opposite local vertex {2, 0, 1, 3}[s];
+//   edges of Tetrahedron<4> are (0,1), (1,2), (2,0), (0,3), (1,3), (2,3).
+// - Faces (edges in 2D, triangles in 3D) and edges store their vertices sorted by increasing
+//   global id.
 // - faceElements(f)[0] is always a valid element; [1] is -1 on boundary faces. faceNormal(f) is
 //   the unit normal pointing out of faceElements(f)[0], hence the outward normal on the boundary.
 // - Boundary parts have ids 0..numBoundaryParts()-1 and names (Gmsh physical names, scene names).
@@ -55,6 +60,14 @@ public:
   const int* elementVertices(int e) const { return &elemVerts_[static_cast<std::size_t>(e) * (dim_ + 1)]; }
   /// Faces of element e, dim()+1 entries; entry i is the face opposite local vertex i.
   const int* elementFaces(int e) const { return &elemFaces_[static_cast<std::size_t>(e) * (dim_ + 1)]; }
+  /// Face on Intrepid2/shards side `side` of element e (see the conventions above).
+  int sideFace(int e, int side) const { return elementFaces(e)[oppositeVertexOfSide(dim_, side)]; }
+  /// Local vertex opposite shards side `side`: 2D {2, 0, 1}, 3D {2, 0, 1, 3}.
+  static int oppositeVertexOfSide(int dim, int side)
+  {
+    constexpr int tri[3] = {2, 0, 1}, tet[4] = {2, 0, 1, 3};
+    return dim == 2 ? tri[side] : tet[side];
+  }
   double elementMeasure(int e) const { return elemMeasure_[e]; }
   /// Longest edge of element e.
   double elementDiameter(int e) const { return elemDiameter_[e]; }
@@ -62,6 +75,15 @@ public:
   std::pair<const int*, const int*> vertexElements(int v) const
   {
     return {&vertElems_[vertElemPtr_[v]], &vertElems_[vertElemPtr_[v + 1]]};
+  }
+
+  // Edges (in 2D the same entities as the faces, numbered alike) ------------------------------
+  int numEdges() const { return static_cast<int>(edgeVerts_.size()) / 2; }
+  const int* edgeVertices(int ed) const { return &edgeVerts_[static_cast<std::size_t>(ed) * 2]; }
+  /// Edges of element e in shards order: 3 (2D, edge s = side s) or 6 (3D).
+  const int* elementEdges(int e) const
+  {
+    return &elemEdges_[static_cast<std::size_t>(e) * (dim_ == 2 ? 3 : 6)];
   }
 
   // Faces ------------------------------------------------------------------------------------
@@ -111,6 +133,7 @@ private:
   void checkFolds() const;
   void checkHangingNodes() const;
   void buildVertexElements();
+  void buildEdges();
   double signedMeasure(const int* v) const;
   std::string describeElement(int e) const;
   std::string describeFace(const int* v) const;
@@ -129,6 +152,7 @@ private:
   std::vector<int> boundaryFaces_;
   std::vector<std::string> boundaryNames_;
   std::vector<int> vertElemPtr_, vertElems_;
+  std::vector<int> edgeVerts_, elemEdges_;
 };
 
 }  // namespace sc::mesh
