@@ -1,0 +1,73 @@
+#pragma once
+// Physical values of the element basis functions at cubature points, oriented (Intrepid2
+// OrientationTools) and mapped (contravariant Piola for RT: φ = J φ̂ / det J, div φ = div̂ φ̂ / det J;
+// identity for the P_k bases), on an element (ElementValues) or on one face of it (FaceValues).
+// Cubature from Intrepid2's DefaultCubatureFactory, exact for polynomials of the given degree.
+// Elements are affine (straight-sided simplices), so J is constant per element.
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace sc::disc {
+
+class MixedElasticitySpace;
+
+class ElementValues {
+public:
+  ElementValues(const MixedElasticitySpace& space, int cubatureDegree);
+  ~ElementValues();
+  void reinit(int element);
+
+  int numPoints() const { return nq_; }
+  /// Physical cubature point q (dim coordinates) and weight (reference weight × det J).
+  const double* point(int q) const { return &points_[q * 3]; }
+  double weight(int q) const { return weights_[q]; }
+  /// RT basis function a (one row's basis) at q: component c, and its divergence.
+  double stress(int a, int q, int c) const { return rt_[(a * nq_ + q) * 3 + c]; }
+  double stressDiv(int a, int q) const { return rtDiv_[a * nq_ + q]; }
+  /// DP_k basis function a at q.
+  double displacement(int a, int q) const { return dp_[a * nq_ + q]; }
+  /// CP_k basis function a at q.
+  double rotation(int a, int q) const { return cp_[a * nq_ + q]; }
+  double measure() const { return measure_; }
+
+  struct Impl;
+
+private:
+  const MixedElasticitySpace& space_;
+  std::unique_ptr<Impl> impl_;
+  int nq_;
+  std::vector<double> points_, weights_, rt_, rtDiv_, dp_, cp_;
+  double measure_ = 0.0;
+};
+
+class FaceValues {
+public:
+  FaceValues(const MixedElasticitySpace& space, int cubatureDegree);
+  ~FaceValues();
+  /// Values of element `element`'s basis on its face opposite local vertex `localFace`.
+  void reinit(int element, int localFace);
+
+  int numPoints() const { return nq_; }
+  const double* point(int q) const { return &points_[q * 3]; }
+  /// Reference weight scaled to the physical face measure.
+  double weight(int q) const { return weights_[q]; }
+  /// Unit normal pointing out of the element.
+  const std::array<double, 3>& normal() const { return normal_; }
+  double stress(int a, int q, int c) const { return rt_[(a * nq_ + q) * 3 + c]; }
+  /// φ_a · n at q.
+  double stressNormal(int a, int q) const;
+  double displacement(int a, int q) const { return dp_[a * nq_ + q]; }
+  double rotation(int a, int q) const { return cp_[a * nq_ + q]; }
+
+  struct Impl;
+
+private:
+  const MixedElasticitySpace& space_;
+  std::unique_ptr<Impl> impl_;
+  int nq_;
+  std::vector<double> points_, weights_, rt_, dp_, cp_;
+  std::array<double, 3> normal_{};
+};
+
+}  // namespace sc::disc
