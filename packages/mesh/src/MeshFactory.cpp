@@ -40,9 +40,9 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
     sc::core::declareString(*p, "File", "",
                             "Gmsh .msh file (format 2.2 or 4.1) for Source = Gmsh file; relative "
                             "paths are taken from the working directory");
-    sc::core::declareRealArray(*p, "Lower corner", Teuchos::tuple<double>(0.0, 0.0),
+    sc::core::declareRealArray(*p, "Lower corner", Teuchos::Array<double>(2, 0.0),
                                "Lower-left corner of the Rectangle", {2});
-    sc::core::declareRealArray(*p, "Upper corner", Teuchos::tuple<double>(1.0, 1.0),
+    sc::core::declareRealArray(*p, "Upper corner", Teuchos::Array<double>(2, 1.0),
                                "Upper-right corner of the Rectangle", {2});
     valid = p;
   }

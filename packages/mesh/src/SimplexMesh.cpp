@@ -56,6 +56,21 @@ SimplexMesh::SimplexMesh(int dim, std::vector<double> coordinates, std::vector<i
   checkHangingNodes();
   buildVertexElements();
   buildEdges();
+  boundaryVertex_.assign(numVertices(), 0);
+  for (int f : boundaryFaces_)
+    for (int i = 0; i < dim_; ++i) boundaryVertex_[faceVertices(f)[i]] = 1;
+}
+
+std::vector<int> SimplexMesh::elementsWithAllVerticesOnBoundary() const
+{
+  std::vector<int> out;
+  for (int e = 0; e < numElements(); ++e) {
+    const int* v = elementVertices(e);
+    bool all = true;
+    for (int i = 0; i <= dim_; ++i) all = all && boundaryVertex_[v[i]];
+    if (all) out.push_back(e);
+  }
+  return out;
 }
 
 void SimplexMesh::buildEdges()

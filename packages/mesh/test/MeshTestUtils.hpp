@@ -31,6 +31,8 @@ inline std::string conformityProblem(const SimplexMesh& m)
     nb += boundary;
   }
   if (nb != static_cast<long>(m.boundaryFaces().size())) return "boundary face count";
+  // A hanging face would show up as an untagged boundary face.
+  if (m.hasBoundary("Unnamed")) return "untagged boundary faces (hanging faces?)";
   if (m.eulerCharacteristic() != 1) return "Euler characteristic " + std::to_string(m.eulerCharacteristic());
   return "";
 }

@@ -61,10 +61,15 @@ TEUCHOS_UNIT_TEST(Refinement, UniformHalfBallMultipliesByEightAndStaysConforming
 {
   auto r = makeRefiner(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.5, true);
   TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+  out << "initial: " << r->mesh()->numElements() << " tetrahedra, "
+      << r->mesh()->elementsWithAllVerticesOnBoundary().size()
+      << " with all vertices on the boundary\n";
   for (int level = 1; level <= 2; ++level) {
     const int ne = r->mesh()->numElements();
     r->refineUniformly();
-    out << "level " << level << ": " << ne << " -> " << r->mesh()->numElements() << "\n";
+    out << "level " << level << ": " << ne << " -> " << r->mesh()->numElements() << " ("
+        << r->mesh()->elementsWithAllVerticesOnBoundary().size()
+        << " with all vertices on the boundary)\n";
     TEST_EQUALITY(r->mesh()->numElements(), 8 * ne);
     TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
   }

@@ -24,6 +24,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,11 @@ public:
   /// One uniform level: every element bisected dim() times (×4 in 2D, ×8 in 3D) plus closure.
   const RefinementStep& refineUniformly();
 
-  /// All steps so far (index 0 = first refinement of the initial mesh).
-  const std::vector<RefinementStep>& history() const { return history_; }
+  /// All steps so far (index 0 = first refinement of the initial mesh, or the first step after
+  /// forgetHistory()). References returned by refine() stay valid until forgetHistory().
+  const std::deque<RefinementStep>& history() const { return history_; }
+  /// Drop the recorded steps (their per-element arrays) once the caller has used them.
+  void forgetHistory() { history_.clear(); }
   /// Bisection generation of element e of mesh() (0 for initial elements).
   int generation(int e) const { return gen_[e]; }
 
@@ -87,7 +91,7 @@ private:
   HashIndexMap<std::uint64_t> midpoints_;
   std::vector<char> splitEndpoint_;
   RefinementStep* step_ = nullptr;
-  std::vector<RefinementStep> history_;
+  std::deque<RefinementStep> history_;  // deque: references stay valid as it grows
 };
 
 }  // namespace sc::mesh

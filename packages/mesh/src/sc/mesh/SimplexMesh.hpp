@@ -108,6 +108,11 @@ public:
   int faceBoundaryId(int f) const { return faceBoundary_[f]; }
   /// Boundary faces of one part (ascending).
   std::vector<int> boundaryFacesOf(const std::string& name) const;
+  /// True if vertex v lies on a boundary face.
+  bool isBoundaryVertex(int v) const { return boundaryVertex_[v] != 0; }
+  /// Elements all of whose vertices are on the boundary (3D Taylor–Hood stability, DESIGN §2,
+  /// asks to avoid such tetrahedra; in 2D: triangles with three boundary vertices).
+  std::vector<int> elementsWithAllVerticesOnBoundary() const;
   /// Total measure (length/area) of one boundary part.
   double boundaryMeasure(const std::string& name) const;
 
@@ -153,6 +158,7 @@ private:
   std::vector<std::string> boundaryNames_;
   std::vector<int> vertElemPtr_, vertElems_;
   std::vector<int> edgeVerts_, elemEdges_;
+  std::vector<char> boundaryVertex_;
 };
 
 }  // namespace sc::mesh
