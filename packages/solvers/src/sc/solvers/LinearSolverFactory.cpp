@@ -1,0 +1,138 @@
+// The "Linear Solver" sublist and the registry of direct solvers. No Tpetra headers here.
+
+#include <sc/solvers/LinearSolverFactory.hpp>
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
+#include <sc/solvers/Klu2Solver.hpp>
+#include <sc/solvers/MumpsSolver.hpp>
+
+namespace sc::solvers {
+
+namespace {
+
+const std::vector<std::string>& orderingNames()
+{
+  // index = ICNTL(7) value; 1 (user-given) is not offered
+  static const std::vector<std::string> names = {"AMD", "", "AMF", "SCOTCH", "PORD",
+                                                 "METIS", "QAMD", "Auto"};
+  return names;
+}
+
+using Builder = std::function<Teuchos::RCP<DirectSolver>(const Teuchos::ParameterList&)>;
+
+// Registered types, in the order listed to users.
+const std::vector<std::pair<std::string, Builder>>& registry()
+{
+  static const std::vector<std::pair<std::string, Builder>> types = {
+      {"KLU2",
+       [](const Teuchos::ParameterList&) -> Teuchos::RCP<DirectSolver> {
+         return Teuchos::rcp(new Klu2Solver());
+       }},
+      {"MUMPS",
+       [](const Teuchos::ParameterList& pl) -> Teuchos::RCP<DirectSolver> {
+         const auto& mp = pl.sublist("MUMPS");
+         MumpsOptions o;
+         o.memoryRelaxationPercent = mp.get<int>("Memory relaxation percent");
+         o.workspaceRetries = mp.get<int>("Workspace retries");
+         const auto& names = orderingNames();
+         o.ordering = static_cast<int>(
+             std::find(names.begin(), names.end(), mp.get<std::string>("Ordering")) -
+             names.begin());
+         o.verbose = pl.get<bool>("Verbose");
+         return Teuchos::rcp(new MumpsSolver(o));
+       }},
+  };
+  return types;
+}
+
+}  // namespace
+
+std::vector<std::string> LinearSolverFactory::knownTypes()
+{
+  std::vector<std::string> names;
+  for (const auto& t : registry()) names.push_back(t.first);
+  return names;
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParameters()
+{
+  static const Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    using namespace sc::core;
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
+    declareChoice(*pl, "Type", "KLU2", knownTypes(),
+                  "Direct solver for the saddle-point system (DESIGN §6): KLU2 (Amesos2; gathers "
+                  "the matrix on rank 0, serial LU) or MUMPS (parallel multifrontal LU/LDLᵀ).");
+    declareBool(*pl, "Symmetric", false,
+                "The matrix is symmetric (no contact rows): MUMPS then factorises LDLᵀ (SYM = 2) "
+                "from the lower triangle, about half the work and memory. Must be false once "
+                "contact rows are replaced (DESIGN §3). KLU2 ignores it.");
+    declareBool(*pl, "Equilibrate", true,
+                "Scale rows and columns (Ruiz, powers of two; symmetric if Symmetric = true) before "
+                "factorising: the stress, displacement and rotation blocks differ by orders of "
+                "magnitude (DESIGN §3).");
+    declareInt(*pl, "Equilibration iterations", 20,
+               "Maximum Ruiz sweeps; they stop earlier when every row and column ∞-norm is within "
+               "0.1 of 1.",
+               1, 1000);
+    declareReal(*pl, "Maximum relative residual", 1e-6,
+                "A solve whose ‖b − A x‖₂/‖b‖₂ exceeds this is an error (singular or nearly "
+                "singular matrix, or Symmetric = true for a non-symmetric one); 0 disables the "
+                "check.",
+                0.0, false, kInfinity, false);
+    declareBool(*pl, "Verbose", false, "Let MUMPS print its diagnostics (ICNTL(1..4)).");
+    auto& mp = pl->sublist("MUMPS", false, "Options of the MUMPS solver (used when Type = MUMPS).");
+    declareInt(mp, "Memory relaxation percent", 30,
+               "ICNTL(14): workspace added to the analysis estimate, in percent. Pivoting in "
+               "indefinite systems can need more; see Workspace retries.",
+               0, 100000);
+    declareInt(mp, "Workspace retries", 3,
+               "On MUMPS errors -8/-9 (workspace too small) refactorise up to this many times, "
+               "doubling ICNTL(14) each time.",
+               0, 20);
+    declareChoice(mp, "Ordering", "METIS", {"Auto", "AMD", "AMF", "SCOTCH", "PORD", "METIS", "QAMD"},
+                  "ICNTL(7), the fill-reducing ordering of the (sequential) analysis. Auto lets "
+                  "MUMPS choose, which may depend on the number of ranks.");
+    return pl;
+  }();
+  return valid;
+}
+
+Teuchos::RCP<DirectSolver> LinearSolverFactory::create(const Teuchos::ParameterList& list)
+{
+  const auto types = knownTypes();
+  if (list.isParameter("Type") && list.isType<std::string>("Type")) {
+    const auto type = list.get<std::string>("Type");
+    if (std::find(types.begin(), types.end(), type) == types.end()) {
+      std::ostringstream known;
+      for (size_t i = 0; i < types.size(); ++i) known << (i ? ", " : "") << types[i];
+      const std::string near = sc::core::closestMatch(type, types);
+      throw sc::core::InputError("Linear Solver/Type = \"" + type +
+                                 "\" is not a known solver type; known types: " + known.str() +
+                                 (near.empty() ? "" : " (did you mean " + near + "?)"));
+    }
+  }
+  Teuchos::ParameterList pl(list);
+  sc::core::validateParameters(pl, *getValidParameters(), "Linear Solver");
+  const auto type = pl.get<std::string>("Type");
+  const auto it = std::find_if(registry().begin(), registry().end(),
+                               [&](const auto& t) { return t.first == type; });
+  auto solver = it->second(pl);
+  solver->setSymmetric(pl.get<bool>("Symmetric"));
+  solver->setEquilibration(pl.get<bool>("Equilibrate"));
+  solver->setEquilibrationIterations(pl.get<int>("Equilibration iterations"));
+  solver->setMaximumRelativeResidual(pl.get<double>("Maximum relative residual"));
+  return solver;
+}
+
+Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList)
+{
+  return LinearSolverFactory::create(linearSolverList);
+}
+
+}  // namespace sc::solvers

@@ -1,0 +1,34 @@
+#pragma once
+// Owner of the "Linear Solver" sublist (DESIGN §6, §8): its valid parameters and the direct
+// solvers it names. Types are registered by name; an unknown type is an InputError listing the
+// known ones (STYLE.md, Trilinos anchor).
+
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <sc/solvers/DirectSolver.hpp>
+
+namespace sc::solvers {
+
+class LinearSolverFactory {
+public:
+  /// The "Linear Solver" sublist: Type, Symmetric, Equilibrate, Equilibration iterations,
+  /// Maximum relative residual, Verbose, and the MUMPS sublist (Memory relaxation percent,
+  /// Workspace retries, Ordering). Every entry has a default, a doc string and a validator.
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+
+  /// Known solver types, in the order they are listed to users.
+  static std::vector<std::string> knownTypes();
+
+  /// Build the solver named by list's "Type". The list is validated (a copy, defaults filled in):
+  /// unknown keys, bad values and unknown types are sc::core::InputError.
+  static Teuchos::RCP<DirectSolver> create(const Teuchos::ParameterList& linearSolverList);
+};
+
+/// Same as LinearSolverFactory::create.
+Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList);
+
+}  // namespace sc::solvers

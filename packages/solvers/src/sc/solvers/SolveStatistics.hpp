@@ -1,0 +1,39 @@
+#pragma once
+// What the last factorisations and solve of a DirectSolver cost and how accurate the solve was.
+
+namespace sc::solvers {
+
+struct SolveStatistics {
+  // Wall-clock seconds of the most recent call of each phase (rank 0's clock; all ranks take
+  // part in every phase).
+  double equilibrationSeconds = 0.0;
+  double symbolicSeconds = 0.0;
+  double numericSeconds = 0.0;
+  double solveSeconds = 0.0;
+
+  // Counters since the operator was first set.
+  int symbolicFactorizations = 0;  ///< analyses (orderings) done
+  int numericFactorizations = 0;   ///< numerical factorisations done
+  int symbolicReuses = 0;          ///< numerical factorisations that reused an earlier analysis
+  int solves = 0;
+  int workspaceRetries = 0;        ///< MUMPS factorisations repeated with a larger ICNTL(14)
+
+  int equilibrationIterations = 0;  ///< Ruiz sweeps of the last equilibration (0: off)
+
+  /// max over right-hand sides of ‖b − A x‖₂ / ‖b‖₂ with the caller's (unscaled) A, after the
+  /// last solve (‖b‖ = 0 counts as ‖b − A x‖).
+  double relativeResidual = 0.0;
+
+  /// Entries in the factors (KLU2: nnz(L)+nnz(U); MUMPS: INFOG(29)); -1 if unknown.
+  long long factorNonzeros = -1;
+
+  // MUMPS memory (MB) of the last factorisation, -1 for other solvers:
+  // INFOG(18)/(19): factorisation, max per rank / sum over ranks;
+  // INFOG(21)/(22): factorisation + solve, max per rank / sum over ranks.
+  double mumpsFactorMemoryMaxMB = -1.0;
+  double mumpsFactorMemoryTotalMB = -1.0;
+  double mumpsMemoryMaxMB = -1.0;
+  double mumpsMemoryTotalMB = -1.0;
+};
+
+}  // namespace sc::solvers

@@ -1,0 +1,65 @@
+// The "Linear Solver" sublist: defaults, validation, and (f) an unknown type is an InputError
+// listing the known types.
+
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <sc/core/Error.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
+
+namespace {
+
+using sc::solvers::LinearSolverFactory;
+
+TEUCHOS_UNIT_TEST(LinearSolverFactory, UnknownTypeListsKnownTypes)
+{
+  Teuchos::ParameterList pl;
+  pl.set("Type", std::string("SuperLU"));
+  try {
+    sc::solvers::createDirectSolver(pl);
+    TEST_ASSERT(false);
+  } catch (const sc::core::InputError& e) {
+    const std::string what = e.what();
+    out << what << "\n";
+    TEST_ASSERT(what.find("SuperLU") != std::string::npos);
+    TEST_ASSERT(what.find("KLU2") != std::string::npos);
+    TEST_ASSERT(what.find("MUMPS") != std::string::npos);
+  }
+}
+
+TEUCHOS_UNIT_TEST(LinearSolverFactory, UnknownKeyAndBadValueAreInputErrors)
+{
+  Teuchos::ParameterList typo;
+  typo.set("Equilibrat", false);
+  TEST_THROW(sc::solvers::createDirectSolver(typo), sc::core::InputError);
+  Teuchos::ParameterList bad;
+  bad.sublist("MUMPS").set("Ordering", std::string("RCM"));
+  TEST_THROW(sc::solvers::createDirectSolver(bad), sc::core::InputError);
+}
+
+TEUCHOS_UNIT_TEST(LinearSolverFactory, DefaultsAndDocumentation)
+{
+  const auto valid = LinearSolverFactory::getValidParameters();
+  TEST_EQUALITY(valid->get<std::string>("Type"), "KLU2");
+  TEST_EQUALITY(valid->get<bool>("Equilibrate"), true);
+  TEST_EQUALITY(valid->get<bool>("Symmetric"), false);
+  TEST_EQUALITY(valid->sublist("MUMPS").get<int>("Memory relaxation percent"), 30);
+  // every entry documented
+  for (auto it = valid->begin(); it != valid->end(); ++it)
+    TEST_ASSERT(!valid->entry(it).docString().empty());
+  for (auto it = valid->sublist("MUMPS").begin(); it != valid->sublist("MUMPS").end(); ++it)
+    TEST_ASSERT(!valid->sublist("MUMPS").entry(it).docString().empty());
+  Teuchos::ParameterList pl;  // all defaults
+  auto solver = sc::solvers::createDirectSolver(pl);
+  TEST_EQUALITY(solver->name(), "KLU2");
+  TEST_ASSERT(solver->equilibrationEnabled());
+  pl.set("Type", std::string("MUMPS"));
+  pl.set("Symmetric", true);
+  solver = sc::solvers::createDirectSolver(pl);
+  TEST_EQUALITY(solver->name(), "MUMPS");
+  TEST_ASSERT(solver->isSymmetric());
+}
+
+}  // namespace
