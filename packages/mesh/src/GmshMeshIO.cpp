@@ -74,6 +74,7 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
   std::vector<std::vector<std::size_t>> elemTags, nodeTags;
   gmsh::model::mesh::getElements(types, elemTags, nodeTags, dim, -1);
   std::vector<std::size_t> elemNodes;
+  SimplexMesh::Labels labels;  // Gmsh tags, quoted in error messages
   for (std::size_t t = 0; t < types.size(); ++t) {
     SC_THROW_IF(types[t] != linearType, sc::core::InputError,
                 origin << ": unsupported element type " << elementTypeName(types[t]) << " (element "
@@ -81,6 +82,7 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
                        << "); StressContact reads linear "
                        << (dim == 2 ? "3-node triangles" : "4-node tetrahedra") << " only");
     elemNodes.insert(elemNodes.end(), nodeTags[t].begin(), nodeTags[t].end());
+    labels.element.insert(labels.element.end(), elemTags[t].begin(), elemTags[t].end());
   }
   SC_THROW_IF(elemNodes.empty(), sc::core::InputError,
               origin << ": the file has no " << (dim == 2 ? "triangles" : "tetrahedra")
@@ -152,8 +154,9 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
     }
   }
   (void)nve;
+  labels.vertex = usedTags;
   return Teuchos::rcp(new SimplexMesh(dim, std::move(coords), std::move(elemVerts), bfv, bpart,
-                                      names, origin));
+                                      names, origin, &labels));
 }
 
 void buildGeometryModel(const Geometry& geometry, double meshSize)

@@ -34,9 +34,11 @@ inline double norm(const double* a, int d)
 SimplexMesh::SimplexMesh(int dim, std::vector<double> coordinates, std::vector<int> elementVertices,
                          const std::vector<int>& boundaryFaceVertices,
                          const std::vector<int>& boundaryFacePart,
-                         std::vector<std::string> boundaryNames, std::string origin)
+                         std::vector<std::string> boundaryNames, std::string origin,
+                         const Labels* labels)
     : dim_(dim), origin_(std::move(origin)), coords_(std::move(coordinates)),
-      elemVerts_(std::move(elementVertices)), boundaryNames_(std::move(boundaryNames))
+      elemVerts_(std::move(elementVertices)), boundaryNames_(std::move(boundaryNames)),
+      labels_(labels)
 {
   SC_THROW_IF(dim_ != 2 && dim_ != 3, sc::core::InputError,
               origin_ << ": mesh dimension " << dim_ << " is not supported (valid: 2, 3)");
@@ -59,6 +61,21 @@ SimplexMesh::SimplexMesh(int dim, std::vector<double> coordinates, std::vector<i
   boundaryVertex_.assign(numVertices(), 0);
   for (int f : boundaryFaces_)
     for (int i = 0; i < dim_; ++i) boundaryVertex_[faceVertices(f)[i]] = 1;
+  labels_ = nullptr;
+}
+
+std::string SimplexMesh::vertexLabel(int v) const
+{
+  if (labels_ && static_cast<std::size_t>(v) < labels_->vertex.size())
+    return "node " + std::to_string(labels_->vertex[v]);
+  return "vertex " + std::to_string(v);
+}
+
+std::string SimplexMesh::elementLabel(int e) const
+{
+  if (labels_ && static_cast<std::size_t>(e) < labels_->element.size())
+    return "element " + std::to_string(labels_->element[e]);
+  return "element " + std::to_string(e);
 }
 
 std::vector<int> SimplexMesh::elementsWithAllVerticesOnBoundary() const
@@ -112,10 +129,10 @@ double SimplexMesh::signedMeasure(const int* v) const
 std::string SimplexMesh::describeElement(int e) const
 {
   std::ostringstream os;
-  os << "element " << e << " (vertices";
+  os << elementLabel(e) << " (";
   const int* v = elementVertices(e);
   for (int i = 0; i <= dim_; ++i) {
-    os << " " << v[i] << " (";
+    os << (i ? ", " : "") << vertexLabel(v[i]) << " (";
     for (int k = 0; k < dim_; ++k) os << (k ? ", " : "") << vertex(v[i])[k];
     os << ")";
   }
@@ -126,12 +143,13 @@ std::string SimplexMesh::describeElement(int e) const
 std::string SimplexMesh::describeFace(const int* v) const
 {
   std::ostringstream os;
-  os << (dim_ == 2 ? "edge" : "face") << " with vertices";
+  os << (dim_ == 2 ? "edge" : "face") << " (";
   for (int i = 0; i < dim_; ++i) {
-    os << " " << v[i] << " (";
+    os << (i ? ", " : "") << vertexLabel(v[i]) << " (";
     for (int k = 0; k < dim_; ++k) os << (k ? ", " : "") << vertex(v[i])[k];
     os << ")";
   }
+  os << ")";
   return os.str();
 }
 
@@ -183,8 +201,8 @@ void SimplexMesh::buildFaces()
       if (fe[1] >= 0) {
         std::ostringstream os;
         os << origin_ << ": non-conforming mesh: the " << describeFace(fv)
-           << " is shared by more than two elements (" << fe[0] << ", " << fe[1] << ", " << e
-           << ")";
+           << " is shared by more than two elements (" << elementLabel(fe[0]) << ", "
+           << elementLabel(fe[1]) << ", " << elementLabel(e) << ")";
         throw sc::core::InputError(os.str());
       }
       fe[1] = e;
@@ -375,8 +393,9 @@ void SimplexMesh::checkHangingNodes() const
       double dist2 = 0;
       for (int i = 0; i < dim_; ++i) dist2 += std::pow(av[i] - t * ab[i], 2);
       SC_THROW_IF(t > 1e-8 && t < 1 - 1e-8 && dist2 < 1e-16 * ab2, sc::core::InputError,
-                  origin_ << ": non-conforming mesh: hanging node " << v << " lies on the edge ("
-                          << a << ", " << b << ") of a neighbouring element");
+                  origin_ << ": non-conforming mesh: hanging node: " << vertexLabel(v)
+                          << " lies inside the edge (" << vertexLabel(a) << ", " << vertexLabel(b)
+                          << ") of a neighbouring element");
     }
   }
 }

@@ -6,6 +6,7 @@
 
 #include <sc/core/Error.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
+#include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
 
 #include <Teuchos_UnitTestHarness.hpp>
@@ -55,6 +56,19 @@ TEUCHOS_UNIT_TEST(GmshFile, HalfDiscFilesMatchTheScene)
   }
 }
 
+// 3D: half_ball_h0.5_v41.msh (same tool, HalfBallGeometry(1), size 0.5).
+TEUCHOS_UNIT_TEST(GmshFile, HalfBallFileMatchesTheScene)
+{
+  auto scene = GmshMeshIO::meshGeometry(HalfBallGeometry(1.0), 0.5);
+  auto m = GmshMeshIO::readFile(dataDir + "/half_ball_h0.5_v41.msh", 3);
+  out << m->numElements() << " tetrahedra, volume " << m->measure() << "\n";
+  TEST_ASSERT(m->boundaryNames() == std::vector<std::string>({"Top", "Cap"}));
+  TEST_EQUALITY(m->numElements(), scene->numElements());
+  TEST_FLOATING_EQUALITY(m->measure(), scene->measure(), 1e-12);
+  TEST_FLOATING_EQUALITY(m->boundaryMeasure("Cap"), scene->boundaryMeasure("Cap"), 1e-12);
+  TEST_COMPARE(std::abs(m->measure() - 2 * M_PI / 3), <, 0.1);
+}
+
 TEUCHOS_UNIT_TEST(GmshFile, MissingFileNamesTheFile)
 {
   expectInputError([] { GmshMeshIO::readFile("no/such/mesh.msh", 2); },
@@ -89,19 +103,26 @@ TEUCHOS_UNIT_TEST(GmshFile, UnsupportedAndInvalidElementsNameTheEntity)
                      "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 2 0 0\n$EndNodes\n"
                      "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";
   expectInputError([&] { GmshMeshIO::readFile(writeFile("flat.msh", flat), 2); },
-                   {"flat.msh", "degenerate element 0"}, success, out);
+                   {"flat.msh", "degenerate element 1 (node 1 (0, 0), node 2 (1, 0), node 3 (2, 0))"}, success, out);
   // Three triangles on one edge (non-conforming).
   std::string fan = std::string(kHeader) +
                     "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 2 0\n$EndNodes\n"
                     "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 2 1 4\n3 2 2 1 1 1 2 5\n$EndElements\n";
   expectInputError([&] { GmshMeshIO::readFile(writeFile("fan.msh", fan), 2); },
-                   {"fan.msh", "shared by more than two elements"}, success, out);
+                   {"fan.msh", "edge (node 1 (0, 0), node 2 (1, 0)) is shared by more than two elements (element 1, element 2, element 3)"}, success, out);
+  // Folded: the second triangle lies on the same side of the shared edge 1-2 (an inverted
+  // element in a mesh that would otherwise be conforming).
+  std::string fold = std::string(kHeader) +
+                     "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 0.5 0\n$EndNodes\n"
+                     "$Elements\n2\n1 2 2 1 1 1 2 3\n2 2 2 1 1 2 1 4\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("fold.msh", fold), 2); },
+                   {"fold.msh", "overlapping elements: element 1", "element 2"}, success, out);
   // Hanging node: node 5 in the middle of edge 1-2.
   std::string hang = std::string(kHeader) +
                      "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 0 0\n$EndNodes\n"
                      "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 4 5\n3 2 2 1 1 5 4 2\n$EndElements\n";
   expectInputError([&] { GmshMeshIO::readFile(writeFile("hang.msh", hang), 2); },
-                   {"hang.msh", "hanging node"}, success, out);
+                   {"hang.msh", "hanging node: node 5 lies inside the edge (node 1, node 2)"}, success, out);
 }
 
 TEUCHOS_UNIT_TEST(GmshFile, UnnamedPhysicalGroupsAndUntaggedFaces)

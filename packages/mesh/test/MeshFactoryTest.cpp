@@ -104,6 +104,24 @@ TEUCHOS_UNIT_TEST(MeshFactory, BoxScenes)
   TEST_FLOATING_EQUALITY(cube->faceNormal(f)[1], -1.0, 1e-13);
 }
 
+// Radius: the half disc of radius 0.5 has area π/8 (analytic); projection keeps every Arc vertex on
+// the circle around (0, 1).
+TEUCHOS_UNIT_TEST(MeshFactory, HalfDiscRadius)
+{
+  Teuchos::ParameterList p;
+  p.set("Radius", 0.5);
+  p.set("Initial mesh size", 0.1);
+  p.set("Uniform refinements", 2);
+  auto m = MeshFactory::build(p, 2)->mesh();
+  TEST_FLOATING_EQUALITY(m->measure(), M_PI / 8, 1e-3);
+  TEST_FLOATING_EQUALITY(m->boundaryMeasure("Top"), 1.0, 1e-13);
+  for (int f : m->boundaryFacesOf("Arc"))
+    for (int i = 0; i < 2; ++i) {
+      const double* x = m->vertex(m->faceVertices(f)[i]);
+      TEST_FLOATING_EQUALITY(std::hypot(x[0], x[1] - 1), 0.5, 1e-13);
+    }
+}
+
 TEUCHOS_UNIT_TEST(MeshFactory, GmshFileSource)
 {
   Teuchos::ParameterList p;

@@ -122,7 +122,7 @@ TEUCHOS_UNIT_TEST(SimplexMesh, BadMeshesAreInputErrors)
         SimplexMesh(2, {0, 0, 1, 0, 0.5, 1, 0.5, -1, 0.5, 0}, {0, 1, 2, 0, 3, 4, 4, 3, 1}, {}, {},
                     {}, "hanging");
       },
-      "hanging node 4", success, out);
+      "hanging node: vertex 4", success, out);
   // Degenerate (collinear) triangle.
   expectInputError([] { SimplexMesh(2, {0, 0, 1, 0, 2, 0}, {0, 1, 2}, {}, {}, {}, "flat"); },
                    "degenerate", success, out);

@@ -1,6 +1,7 @@
 // Writes the stored test meshes of packages/mesh/test/data (run once; output is committed):
 //   mesh_write_test_meshes <dir>
 #include <sc/mesh/GmshMeshIO.hpp>
+#include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
 
 #include <cstdio>
@@ -16,5 +17,7 @@ int main(int argc, char** argv)
   const sc::mesh::HalfDiscGeometry g(1.0);
   sc::mesh::GmshMeshIO::writeGeometryMesh(g, 0.25, dir + "/half_disc_h0.25_v41.msh", 4.1);
   sc::mesh::GmshMeshIO::writeGeometryMesh(g, 0.25, dir + "/half_disc_h0.25_v22.msh", 2.2);
+  const sc::mesh::HalfBallGeometry b(1.0);
+  sc::mesh::GmshMeshIO::writeGeometryMesh(b, 0.5, dir + "/half_ball_h0.5_v41.msh", 4.1);
   return 0;
 }

@@ -33,10 +33,15 @@ public:
   /// reordered (two vertices swapped); degenerate elements, faces shared by more than two elements,
   /// folded (overlapping) neighbours, hanging nodes on edges and tagged boundary faces that are not
   /// on the boundary are sc::core::InputError. Boundary faces not listed get the part "Unnamed".
+  /// Optional `labels`: the numbers that errors should quote for vertices and elements (e.g. the
+  /// Gmsh node and element tags of a file), indexed like the vertices/elements given here.
+  struct Labels {
+    std::vector<std::size_t> vertex, element;
+  };
   SimplexMesh(int dim, std::vector<double> coordinates, std::vector<int> elementVertices,
               const std::vector<int>& boundaryFaceVertices,
               const std::vector<int>& boundaryFacePart, std::vector<std::string> boundaryNames,
-              std::string origin);
+              std::string origin, const Labels* labels = nullptr);
 
   SimplexMesh(const SimplexMesh&) = delete;
   SimplexMesh& operator=(const SimplexMesh&) = delete;
@@ -142,6 +147,9 @@ private:
   double signedMeasure(const int* v) const;
   std::string describeElement(int e) const;
   std::string describeFace(const int* v) const;
+  std::string vertexLabel(int v) const;
+  std::string elementLabel(int e) const;
+  const Labels* labels_ = nullptr;  // only during construction
 
   int dim_;
   std::string origin_;
