@@ -35,6 +35,14 @@ void run(const Teuchos::RCP<const Geometry>& g, double h0, long maxElements)
                 created / s.secondsBisection, created / (s.secondsBisection + s.secondsMeshBuild));
   }
   std::printf("  min angle after uniform refinement: %.3f deg\n", r.mesh()->minAngleDeg());
+  // Local refinement on the finest mesh: the elements around vertex 0 (a corner of the domain).
+  auto [b, e] = r.mesh()->vertexElements(0);
+  const std::vector<int> marked(b, e);
+  const int before = r.mesh()->numElements();
+  const auto& s = r.refine(marked);
+  std::printf("  local: %zu marked -> %d elements created, bisect %.4f s, rebuild %.3f s\n",
+              marked.size(), r.mesh()->numElements() - before, s.secondsBisection,
+              s.secondsMeshBuild);
 }
 
 }  // namespace

@@ -188,7 +188,8 @@ void SimplexMesh::buildFaces()
   elemFaces_.assign(static_cast<std::size_t>(ne) * nve, -1);
   faceVerts_.clear();
   faceElems_.clear();
-  const std::size_t expected = static_cast<std::size_t>(ne) * (dim_ == 2 ? 3 : 4) / 2 + 16;
+  // Faces = ((d+1) ne + boundary faces) / 2: leave room for the boundary so the table never grows.
+  const std::size_t expected = static_cast<std::size_t>(ne) * (dim_ + 1) / 2 + ne / 4 + 16;
   faceVerts_.reserve(expected * dim_);
   faceElems_.reserve(expected);
   auto addIncidence = [&](int e, int i, int f, bool isNew, const int* fv) {

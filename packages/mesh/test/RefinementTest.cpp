@@ -6,6 +6,7 @@
 #include "MeshTestUtils.hpp"
 
 #include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/BoxGeometry.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
 #include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
@@ -13,6 +14,7 @@
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include <cmath>
+#include <random>
 
 namespace {
 
@@ -243,6 +245,54 @@ TEUCHOS_UNIT_TEST(Refinement, HistoryMapsChildrenToParents)
   TEST_EQUALITY(static_cast<int>(step.newVertexParents.size()),
                 m.numVertices() - before->numVertices());
   TEST_EQUALITY(conformityProblem(m), std::string());
+}
+
+// Random marking (fixed seed): every intermediate mesh is conforming, and in 3D the refined
+// elements keep dihedral angles above half the initial minimum (AMP shape regularity).
+void randomRefinement(Teuchos::RCP<const Geometry> g, double h, int cycles, double fraction,
+                      Teuchos::FancyOStream& out, bool& success)
+{
+  auto r = makeRefiner(g, h, true);
+  std::mt19937 rng(12345);
+  const double a0 = r->mesh()->minAngleDeg();
+  double amin = 180;
+  for (int c = 0; c < cycles; ++c) {
+    const auto& m = *r->mesh();
+    std::vector<int> marked;
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int e = 0; e < m.numElements(); ++e)
+      if (u(rng) < fraction) marked.push_back(e);
+    const auto& step = r->refine(marked);
+    TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+    for (int e : marked) TEST_COMPARE(step.childrenPtr[e + 1] - step.childrenPtr[e], >=, 2);
+    const auto& n = *r->mesh();
+    for (int e = 0; e < n.numElements(); ++e)
+      if (r->generation(e) > 0)
+        for (double a : n.elementAnglesDeg(e)) amin = std::min(amin, a);
+  }
+  out << g->sceneName() << ": " << cycles << " random cycles -> " << r->mesh()->numElements()
+      << " elements, min angle initial " << a0 << ", refined elements " << amin << "\n";
+  TEST_COMPARE(amin, >=, 0.5 * a0);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, RandomLocalRefinementStaysConforming)
+{
+  randomRefinement(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.2, 12, 0.1, out, success);
+  randomRefinement(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.5, 8, 0.1, out, success);
+  randomRefinement(Teuchos::rcp(new BoxGeometry({0, 0, 0}, {1, 1, 1}, "Unit cube")), 0.4, 8, 0.1,
+                   out, success);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, UniformUnitCubeMultipliesByEight)
+{
+  auto r = makeRefiner(Teuchos::rcp(new BoxGeometry({0, 0, 0}, {1, 1, 1}, "Unit cube")), 0.3, true);
+  for (int level = 1; level <= 2; ++level) {
+    const int ne = r->mesh()->numElements();
+    r->refineUniformly();
+    TEST_EQUALITY(r->mesh()->numElements(), 8 * ne);
+    TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
+    TEST_FLOATING_EQUALITY(r->mesh()->measure(), 1.0, 1e-12);  // analytic
+  }
 }
 
 }  // namespace

@@ -47,6 +47,13 @@ struct KeyHash {
   }
 };
 
+// Plain comparisons (std::array's operator== becomes a memcmp call in the probe loop).
+inline bool keyEqual(std::uint64_t a, std::uint64_t b) { return a == b; }
+inline bool keyEqual(const FaceKey& a, const FaceKey& b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
 template <class Key>
 struct EmptyKey;
 template <>
@@ -78,8 +85,8 @@ public:
   {
     std::size_t i = KeyHash{}(key) & mask_;
     while (true) {
-      if (keys_[i] == key) return &values_[i];
-      if (keys_[i] == EmptyKey<Key>::value()) return nullptr;
+      if (keyEqual(keys_[i], key)) return &values_[i];
+      if (keyEqual(keys_[i], empty_)) return nullptr;
       i = (i + 1) & mask_;
     }
   }
@@ -91,8 +98,8 @@ public:
     if (2 * (size_ + 1) > keys_.size()) rehash(2 * keys_.size());
     std::size_t i = KeyHash{}(key) & mask_;
     while (true) {
-      if (keys_[i] == key) return {&values_[i], false};
-      if (keys_[i] == EmptyKey<Key>::value()) {
+      if (keyEqual(keys_[i], key)) return {&values_[i], false};
+      if (keyEqual(keys_[i], empty_)) {
         keys_[i] = key;
         values_[i] = value;
         ++size_;
@@ -107,7 +114,7 @@ public:
   void forEach(F&& f) const
   {
     for (std::size_t i = 0; i < keys_.size(); ++i)
-      if (!(keys_[i] == EmptyKey<Key>::value())) f(keys_[i], values_[i]);
+      if (!keyEqual(keys_[i], empty_)) f(keys_[i], values_[i]);
   }
 
 private:
@@ -120,9 +127,10 @@ private:
     mask_ = cap - 1;
     size_ = 0;
     for (std::size_t i = 0; i < oldKeys.size(); ++i)
-      if (!(oldKeys[i] == EmptyKey<Key>::value())) insert(oldKeys[i], oldValues[i]);
+      if (!keyEqual(oldKeys[i], empty_)) insert(oldKeys[i], oldValues[i]);
   }
 
+  Key empty_ = EmptyKey<Key>::value();
   std::vector<Key> keys_;
   std::vector<int> values_;
   std::size_t mask_ = 0;
