@@ -7,7 +7,8 @@
 #   sc_add_test(<name> SOURCES ... | COMMAND ...  [LIBS ...] [MPI_RANKS 1 2 4] [ARGS ...]
 #               [WILL_FAIL] [PASS_REGULAR_EXPRESSION re] [LABELS ...] [TIMEOUT s])
 #     One CTest per rank count, named <name>_np<N>, run through mpiexec (DUNE's dune_add_test).
-#     Without MPI_RANKS the test runs once, serially, under its plain name.
+#     Without MPI_RANKS the test runs once, serially, under its plain name. SCRIPT_RANKS 1 2 4 makes
+#     the same per-rank tests for a command that calls mpiexec itself (@NP@ in its arguments).
 
 set(SC_MPIEXEC_EXTRA_FLAGS "--oversubscribe")
 execute_process(COMMAND id -u OUTPUT_VARIABLE _sc_uid OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
@@ -38,7 +39,7 @@ endfunction()
 
 function(sc_add_test name)
   cmake_parse_arguments(T "WILL_FAIL;UNIT_TEST" "PASS_REGULAR_EXPRESSION;TIMEOUT;WORKING_DIRECTORY"
-                        "SOURCES;COMMAND;LIBS;MPI_RANKS;ARGS;LABELS;FAIL_REGULAR_EXPRESSION" ${ARGN})
+                        "SOURCES;COMMAND;LIBS;MPI_RANKS;SCRIPT_RANKS;ARGS;LABELS;FAIL_REGULAR_EXPRESSION" ${ARGN})
   if(T_SOURCES)
     add_executable(${name} ${T_SOURCES})
     target_link_libraries(${name} PRIVATE ${T_LIBS})
@@ -60,6 +61,8 @@ function(sc_add_test name)
   endif()
   if(T_MPI_RANKS)
     set(runs ${T_MPI_RANKS})
+  elseif(T_SCRIPT_RANKS)
+    set(runs ${T_SCRIPT_RANKS})
   else()
     set(runs 0)
   endif()
@@ -68,6 +71,11 @@ function(sc_add_test name)
       set(tname ${name})
       set(full ${cmd} ${T_ARGS})
       set(procs 1)
+    elseif(T_SCRIPT_RANKS)
+      # The command launches mpiexec itself (a -P script): only @NP@ is substituted.
+      set(tname ${name}_np${np})
+      set(full ${cmd} ${T_ARGS})
+      set(procs ${np})
     else()
       set(tname ${name}_np${np})
       set(full ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} ${SC_MPIEXEC_EXTRA_FLAGS}

@@ -1,0 +1,97 @@
+#include "DeckParameters.hpp"
+
+#include <cstdlib>
+#include <fstream>
+
+#include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
+#include <sc/core/ProblemData.hpp>
+#include <sc/io/OutputSettings.hpp>
+#include <sc/mesh/MeshFactory.hpp>
+
+#ifndef SC_SOURCE_INPUT_DIR
+#define SC_SOURCE_INPUT_DIR ""
+#endif
+#ifndef SC_INSTALL_INPUT_DIR
+#define SC_INSTALL_INPUT_DIR ""
+#endif
+#ifndef SC_VERSION
+#define SC_VERSION "unknown"
+#endif
+
+namespace sc::app {
+
+std::string versionString() { return SC_VERSION; }
+
+Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("StressContact"));
+    auto add = [&](const std::string& name, const Teuchos::RCP<const Teuchos::ParameterList>& sub,
+                   const std::string& doc) { pl->set(name, *sub, doc); };
+    add("Problem", core::ProblemSettings::getValidParameters(), "The problem: dimension, name.");
+    add("Mesh", mesh::MeshFactory::getValidParameters(),
+        "Initial mesh: a scene geometry or a Gmsh file, mesh size, refinements (docs/mesh.md).");
+    add("Material", core::Material::getValidParameters(), "Isotropic linear elastic material.");
+    add("Boundary Conditions", core::BoundaryConditions::getValidParameters(),
+        "One sublist per boundary part of the mesh.");
+    add("Contact", core::ContactSettings::getValidParameters(),
+        "Rigid obstacle and friction law, for boundary parts of Type Contact (DESIGN §3).");
+    add("Discretization", core::DiscretizationSettings::getValidParameters(),
+        "Finite element spaces (DESIGN §2).");
+    add("Linear Solver", core::LinearSolverSettings::getValidParameters(),
+        "Linear solver of each (Newton) step (DESIGN §6).");
+    add("Estimator", core::EstimatorSettings::getValidParameters(),
+        "Reconstruction-based a posteriori error estimator (DESIGN §4).");
+    add("Adaptivity", core::AdaptivitySettings::getValidParameters(),
+        "Solve-estimate-mark-refine cycles (DESIGN §5).");
+    add(io::OutputSettings::sublistName, io::OutputSettings::getValidParameters(),
+        "Output files (docs/output.md).");
+    return pl;
+  }();
+  return valid;
+}
+
+void printValidParameters(std::ostream& out)
+{
+  out << "StressContact " << versionString()
+      << ": valid parameters of an input deck (Teuchos XML ParameterList).\n"
+      << "Each key: type = default, then its documentation and valid values. A sublist\n"
+      << "'<name>' stands for any number of sublists named by the user (boundary parts).\n";
+  core::printParameterDocumentation(*getValidParameters(), out);
+}
+
+std::string defaultDeckPath()
+{
+  if (const char* env = std::getenv("STRESSCONTACT_DEFAULT_DECK"))
+    return env;
+  for (const std::string dir : {std::string(SC_SOURCE_INPUT_DIR), std::string(SC_INSTALL_INPUT_DIR)})
+    if (!dir.empty() && std::ifstream(dir + "/hertz2d.xml"))
+      return dir + "/hertz2d.xml";
+  SC_THROW_IF(true, core::InputError,
+              "no input deck given and the default deck hertz2d.xml was found neither in '"
+                  << SC_SOURCE_INPUT_DIR << "' nor in '" << SC_INSTALL_INPUT_DIR
+                  << "'. Give a deck: stresscontact INPUT.xml");
+  return "";
+}
+
+Teuchos::RCP<Teuchos::ParameterList> readAndValidateDeck(const std::string& path,
+                                                         const std::vector<std::string>& overrides,
+                                                         const std::string& outputDirectory)
+{
+  auto params = core::readParameterFile(path);
+  const auto valid = getValidParameters();
+  // Check the deck as written first, so errors name the deck; then the overrides.
+  {
+    Teuchos::ParameterList copy = *params;
+    core::validateParameters(copy, *valid, "'" + path + "'");
+  }
+  for (const auto& o : overrides)
+    core::applyOverride(*params, *valid, o);
+  if (!outputDirectory.empty())
+    params->sublist(io::OutputSettings::sublistName).set("Directory", outputDirectory);
+  core::validateParameters(*params, *valid, "'" + path + "' with command-line overrides");
+  return params;
+}
+
+}  // namespace sc::app

@@ -1,0 +1,210 @@
+#include "Simulation.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+#include <sc/core/Error.hpp>
+#include <sc/io/OutputDirectory.hpp>
+#include <sc/io/RunSummary.hpp>
+#include <sc/io/XdmfWriter.hpp>
+#include <sc/mesh/MeshFactory.hpp>
+#include <sc/mesh/Partitioning.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+
+#include "DeckParameters.hpp"
+
+namespace sc::app {
+
+Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
+                       Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath,
+                       bool quiet)
+  : comm_(std::move(comm)), params_(std::move(params)), deckPath_(std::move(deckPath)),
+    progress_(comm_, std::cout, quiet), timers_(comm_)
+{
+  problem_ = core::ProblemSettings::fromParameters(params_->sublist("Problem"));
+  const int dim = problem_.dimension;
+  material_ = core::Material::fromParameters(params_->sublist("Material"));
+  boundaryConditions_ =
+      core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
+  // Contact data is read (and checked against the dimension) only if the scene has contact.
+  if (boundaryConditions_.hasContact())
+    contact_ = core::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
+  discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
+  adaptivity_ = core::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
+  output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
+
+  SC_THROW_IF(adaptivity_.cycles > 0 && adaptivity_.marking != core::MarkingStrategy::Uniform,
+              core::InputError,
+              "'Adaptivity/Marking' = '" << params_->sublist("Adaptivity").get<std::string>("Marking")
+                  << "' with 'Adaptivity/Cycles' = " << adaptivity_.cycles
+                  << " needs error indicators, and this build has no estimator yet (issue #6). "
+                  << "Valid now: 'Uniform', or Cycles = 0.");
+
+  // What this build cannot compute yet, stated rather than faked.
+  phasesMissing_ = {"mixed elasticity solve (issue #4)"};
+  if (boundaryConditions_.hasContact())
+    phasesMissing_.push_back(std::string("contact") +
+                             (contact_.needsFriction() ? " with friction" : "") + " (issue #5)");
+  phasesMissing_.push_back("error estimator (issue #6)");
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::setupMesh()
+{
+  auto t = timers_.scope("mesh");
+  refiner_ = mesh::MeshFactory::build(params_->sublist("Mesh"), problem_.dimension);
+  mesh_ = refiner_->mesh();
+  boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
+                                         params_->sublist("Mesh").get<std::string>("Source"));
+  progress_.report("mesh", std::to_string(mesh_->numElements()) + " elements, " +
+                               std::to_string(mesh_->numVertices()) + " vertices");
+}
+
+void Simulation::refineMesh()
+{
+  auto t = timers_.scope("refine");
+  // Only uniform marking exists until the estimator (#6) provides indicators.
+  refiner_->refineUniformly();
+  mesh_ = refiner_->mesh();
+  progress_.report("refine", "uniform: " + std::to_string(mesh_->numElements()) + " elements");
+}
+
+void Simulation::partitionMesh()
+{
+  auto t = timers_.scope("partition");
+  elementOwner_ = mesh::partitionElements(*mesh_, *comm_);
+}
+
+void Simulation::checkScene()
+{
+  setupMesh();
+}
+
+void Simulation::recordCycle(int cycle)
+{
+  nlohmann::ordered_json& c = summary_->addCycle(cycle);
+  c["elements"] = mesh_->numElements();
+  c["mesh"] = {{"vertices", mesh_->numVertices()},
+               {"elements", mesh_->numElements()},
+               {"measure", mesh_->measure()},
+               {"min_angle_deg", mesh_->minAngleDeg()}};
+  std::vector<long long> owned(comm_->getSize(), 0);
+  for (int o : elementOwner_)
+    ++owned[o];
+  c["mesh"]["elements_per_rank"] = owned;
+}
+
+void Simulation::writeFields(int cycle)
+{
+  if (!writer_)
+    return;
+  auto t = timers_.scope("output");
+  const int rank = comm_->getRank(), dim = mesh_->dim();
+  const std::size_t nv = mesh_->numVertices(), ne = mesh_->numElements();
+  const int nodesPerElement = dim + 1;
+
+  // Each vertex is owned by the lowest rank among its elements' owners; vertices are renumbered
+  // so that every rank's owned vertices form one contiguous block, as the writer requires.
+  std::vector<int> vertexOwner(nv, comm_->getSize());
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int* ev = mesh_->elementVertices(static_cast<int>(e));
+    for (int i = 0; i < nodesPerElement; ++i)
+      vertexOwner[ev[i]] = std::min(vertexOwner[ev[i]], elementOwner_[e]);
+  }
+  std::vector<long long> newId(nv);
+  {
+    std::vector<std::size_t> order(nv);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return vertexOwner[a] < vertexOwner[b]; });
+    for (std::size_t i = 0; i < nv; ++i)
+      newId[order[i]] = static_cast<long long>(i);
+  }
+
+  io::GridPiece domain("domain", dim == 2 ? io::CellType::Triangle : io::CellType::Tetrahedron, dim);
+  const auto& x = mesh_->coordinates();
+  std::vector<std::size_t> ownedVertices;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (vertexOwner[v] == rank)
+      ownedVertices.push_back(v);
+  std::sort(ownedVertices.begin(), ownedVertices.end(),
+            [&](std::size_t a, std::size_t b) { return newId[a] < newId[b]; });
+  for (std::size_t v : ownedVertices)
+    for (int d = 0; d < dim; ++d)
+      domain.coordinates.push_back(x[v * dim + d]);
+  std::vector<double> measure;
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (elementOwner_[e] != rank)
+      continue;
+    const int* ev = mesh_->elementVertices(static_cast<int>(e));
+    for (int i = 0; i < nodesPerElement; ++i)
+      domain.connectivity.push_back(newId[ev[i]]);
+    measure.push_back(mesh_->elementMeasure(static_cast<int>(e)));
+  }
+  domain.addCellField("element_measure", io::FieldKind::Scalar, std::move(measure));
+
+  io::GridPiece boundary("boundary", dim == 2 ? io::CellType::Line : io::CellType::Triangle, dim);
+  boundary.geometryFrom = "domain";
+  std::vector<int> boundaryId;
+  for (int f : mesh_->boundaryFaces()) {
+    if (elementOwner_[mesh_->faceElements(f)[0]] != rank)
+      continue;
+    const int* fv = mesh_->faceVertices(f);
+    for (int i = 0; i < dim; ++i)
+      boundary.connectivity.push_back(newId[fv[i]]);
+    boundaryId.push_back(mesh_->faceBoundaryId(f));
+  }
+  boundary.addCellField("boundary_id", std::move(boundaryId));
+  std::map<int, std::string> names;
+  const auto& bn = mesh_->boundaryNames();
+  for (std::size_t i = 0; i < bn.size(); ++i)
+    names[static_cast<int>(i)] = bn[i];
+  boundary.setBoundaryNames(names);
+
+  writer_->writeStep(cycle, {domain, boundary});
+}
+
+void Simulation::run()
+{
+  progress_.message("StressContact " + versionString() + ": " + deckPath_ + " on " +
+                    std::to_string(comm_->getSize()) + " rank(s), output in " + output_.directory);
+  for (const auto& m : phasesMissing_)
+    progress_.message("  not in this build yet: " + m);
+  progress_.setCycle(0, adaptivity_.cycles);
+  // The initial mesh is built (and the boundary names checked against it) before anything is
+  // written, so that a bad scene leaves no output directory behind.
+  setupMesh();
+
+  io::createOutputDirectory(output_.directory, *comm_);
+  summary_ = std::make_unique<io::RunSummary>(comm_, output_.directory, versionString(), *params_);
+  summary_->json()["deck"] = deckPath_;
+  summary_->json()["phases_missing"] = phasesMissing_;
+  if (output_.writeXdmf)
+    writer_ = std::make_unique<io::XdmfWriter>(comm_, output_.directory, output_.baseName);
+
+  try {
+    for (int cycle = 0; cycle <= adaptivity_.cycles; ++cycle) {
+      progress_.setCycle(cycle, adaptivity_.cycles);
+      if (cycle > 0)
+        refineMesh();
+      partitionMesh();
+      writeFields(cycle);
+      recordCycle(cycle);
+      summary_->currentCycle()["timings"] = timers_.cycleTimings();
+      timers_.nextCycle();
+      summary_->write();
+    }
+    // Nothing was solved while the solver packages are missing: the run is not "converged".
+    summary_->setConverged(phasesMissing_.empty());
+    summary_->write();
+    progress_.message("done: " + output_.directory + "/summary.json");
+  } catch (const std::exception& e) {
+    summary_->setError(e.what());
+    summary_->writeLocal();
+    throw;
+  }
+}
+
+}  // namespace sc::app

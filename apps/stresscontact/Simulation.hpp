@@ -1,0 +1,81 @@
+#pragma once
+// One run of StressContact, in the deal.II tutorial shape: a constructor that reads and checks
+// everything, then run() = for each cycle { mesh, solve, estimate, output, refine }.
+//
+// What each cycle does depends on what the scene needs (DESIGN §1): no contact machinery
+// without a Contact boundary, no friction rows when the law is None or μ_F = 0. Phases whose
+// packages do not exist yet (mixed elasticity #4, contact #5, estimator #6) are reported as
+// absent in summary.json ("phases_missing"), never faked.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <sc/core/Progress.hpp>
+#include <sc/core/ProblemData.hpp>
+#include <sc/core/Timers.hpp>
+#include <sc/io/OutputSettings.hpp>
+
+namespace sc::mesh {
+class SimplexMesh;
+class BisectionRefiner;
+}  // namespace sc::mesh
+namespace sc::io {
+class RunSummary;
+class XdmfWriter;
+}  // namespace sc::io
+
+namespace sc::app {
+
+class Simulation {
+public:
+  /// Reads the validated parameter list; throws InputError for combinations that this build
+  /// cannot run (e.g. Dorfler marking without an estimator), before any work.
+  Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
+             Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath, bool quiet);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// `--check`: build the initial mesh and check the boundary conditions against it. Writes
+  /// nothing.
+  void checkScene();
+  /// All cycles; writes summary.json after each cycle and XDMF output.
+  void run();
+
+private:
+  void setupMesh();
+  void refineMesh();
+  void partitionMesh();
+  void writeFields(int cycle);
+  void recordCycle(int cycle);
+
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  Teuchos::RCP<Teuchos::ParameterList> params_;
+  std::string deckPath_;
+
+  // Scene data and method settings (read once, in the constructor).
+  core::ProblemSettings problem_;
+  core::Material material_;
+  core::BoundaryConditions boundaryConditions_;
+  core::ContactSettings contact_;
+  core::DiscretizationSettings discretization_;
+  core::AdaptivitySettings adaptivity_;
+  io::OutputSettings output_;
+
+  core::Progress progress_;
+  core::PhaseTimers timers_;
+
+  Teuchos::RCP<mesh::BisectionRefiner> refiner_;  ///< owns the mesh hierarchy
+  Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
+  std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element
+  std::vector<std::string> phasesMissing_;
+
+  std::unique_ptr<io::RunSummary> summary_;
+  std::unique_ptr<io::XdmfWriter> writer_;
+};
+
+}  // namespace sc::app

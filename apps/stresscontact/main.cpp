@@ -1,0 +1,152 @@
+// stresscontact: the XML-driven application (docs/user-guide.md).
+//
+//   stresscontact [INPUT.xml] [--output DIR] [--set Path/To/Key=value ...] [--check] [--quiet]
+//   stresscontact --print-parameters | --help | --version
+//
+// Without INPUT it runs the default Hertz 2D deck (input/hertz2d.xml). The whole parameter list
+// is validated before any work; a bad deck exits with status 1 and writes nothing.
+//
+// Exit status: 0 success, 1 bad input (deck, mesh file, command line), 2 a solver did not
+// converge (summary.json says converged: false), 3 any other error.
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <Kokkos_Core.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_GlobalMPISession.hpp>
+
+#include <sc/core/Error.hpp>
+
+#include "DeckParameters.hpp"
+#include "Simulation.hpp"
+
+namespace {
+
+const char* kUsage = R"(Usage:
+  stresscontact [INPUT.xml] [options]     run the deck (default: the Hertz 2D deck hertz2d.xml)
+  stresscontact --print-parameters        every valid key with its type, default and documentation
+  stresscontact --help | --version
+
+Options:
+  --output DIR              output directory (overrides Output/Directory)
+  --set Path/To/Key=value   override one parameter, e.g. --set "Material/Poisson ratio=0.4999";
+                            may be repeated; the value's type is the key's type
+  --check                   validate the deck and the scene (mesh, boundary names), write nothing
+  --quiet                   no progress lines
+
+Outputs (in the output directory): summary.json, solution.xdmf + solution_c<N>.h5, and with
+contact contact_cycle<N>.csv. Exit status: 0 success, 1 bad input, 2 no convergence, 3 other.
+)";
+
+struct CommandLine {
+  std::string input;
+  std::string output;
+  std::vector<std::string> overrides;
+  bool check = false, quiet = false, printParameters = false, help = false, version = false;
+};
+
+CommandLine parseCommandLine(int argc, char* argv[])
+{
+  CommandLine cl;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](const std::string& flag) -> std::string {
+      SC_THROW_IF(i + 1 >= argc, sc::core::InputError, flag << " needs a value. " << kUsage);
+      return argv[++i];
+    };
+    if (a == "--help" || a == "-h")
+      cl.help = true;
+    else if (a == "--version")
+      cl.version = true;
+    else if (a == "--print-parameters")
+      cl.printParameters = true;
+    else if (a == "--check")
+      cl.check = true;
+    else if (a == "--quiet")
+      cl.quiet = true;
+    else if (a == "--output")
+      cl.output = value(a);
+    else if (a == "--set")
+      cl.overrides.push_back(value(a));
+    else if (a.rfind("--", 0) == 0)
+      SC_THROW_IF(true, sc::core::InputError,
+                  "unknown option '" << a << "'. Valid options: --output, --set, --check, "
+                                     << "--quiet, --print-parameters, --help, --version.");
+    else {
+      SC_THROW_IF(!cl.input.empty(), sc::core::InputError,
+                  "more than one input deck given ('" << cl.input << "' and '" << a << "').");
+      cl.input = a;
+    }
+  }
+  return cl;
+}
+
+void printFramed(std::ostream& os, const std::string& title, const std::string& message, int rank)
+{
+  const std::string rule(78, '-');
+  os << "\n" << rule << "\nstresscontact: " << title;
+  if (rank > 0)
+    os << " (rank " << rank << ")";
+  os << "\n" << rule << "\n" << message << "\n" << rule << std::endl;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[])
+{
+  Teuchos::GlobalMPISession mpiSession(&argc, &argv, nullptr);
+  Kokkos::ScopeGuard kokkos(argc, argv);
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int rank = comm->getRank();
+  // Errors up to the end of validation are collective (every rank reads the same deck), so each
+  // rank can return; after that an error on one rank aborts the job rather than hang the others.
+  bool collectivePhase = true;
+  try {
+    const CommandLine cl = parseCommandLine(argc, argv);
+    if (cl.help) {
+      if (rank == 0)
+        std::cout << kUsage;
+      return 0;
+    }
+    if (cl.version) {
+      if (rank == 0)
+        std::cout << "stresscontact " << sc::app::versionString() << std::endl;
+      return 0;
+    }
+    if (cl.printParameters) {
+      if (rank == 0)
+        sc::app::printValidParameters(std::cout);
+      return 0;
+    }
+    const std::string deck = cl.input.empty() ? sc::app::defaultDeckPath() : cl.input;
+    auto params = sc::app::readAndValidateDeck(deck, cl.overrides, cl.output);
+    sc::app::Simulation simulation(comm, params, deck, cl.quiet);
+    if (cl.check) {
+      simulation.checkScene();
+      if (rank == 0)
+        std::cout << "stresscontact: '" << deck << "' is valid." << std::endl;
+      return 0;
+    }
+    collectivePhase = false;
+    simulation.run();
+    return 0;
+  } catch (const sc::core::InputError& e) {
+    if (rank == 0 || !collectivePhase)
+      printFramed(std::cerr, "input error", e.what(), rank);
+    if (!collectivePhase && comm->getSize() > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  } catch (const sc::core::ConvergenceError& e) {
+    // Simulation::run has already marked summary.json converged: false on rank 0.
+    if (rank == 0 || !collectivePhase)
+      printFramed(std::cerr, "no convergence", e.what(), rank);
+    return 2;
+  } catch (const std::exception& e) {
+    printFramed(std::cerr, "error", e.what(), rank);
+    if (comm->getSize() > 1)
+      MPI_Abort(MPI_COMM_WORLD, 3);
+    return 3;
+  }
+}

@@ -1,0 +1,129 @@
+// check_summary: assert numbers in a run's summary.json (regression tests in tests/).
+//
+//   check_summary FILE CHECK...
+//   CHECK is one of
+//     near:/json/pointer=VALUE:RELTOL     |x − VALUE| ≤ RELTOL·|VALUE|
+//     eq:/json/pointer=VALUE              x == VALUE (numbers, booleans or strings)
+//     ge:/json/pointer=VALUE  le:/json/pointer=VALUE
+//     size:/json/pointer=N                array or object has N entries
+//     exists:/json/pointer
+//   A pointer component "-1" means the last element of an array.
+// Prints one line per check (measured value, expected, tolerance) and exits 1 if any failed.
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+using nlohmann::json;
+
+namespace {
+
+const json* resolve(const json& root, const std::string& pointer)
+{
+  const json* node = &root;
+  std::stringstream ss(pointer);
+  std::string part;
+  std::getline(ss, part, '/');  // leading empty component
+  while (std::getline(ss, part, '/')) {
+    if (node->is_array()) {
+      long i = std::stol(part);
+      if (i < 0)
+        i += static_cast<long>(node->size());
+      if (i < 0 || i >= static_cast<long>(node->size()))
+        return nullptr;
+      node = &(*node)[static_cast<std::size_t>(i)];
+    } else if (node->is_object() && node->contains(part)) {
+      node = &(*node)[part];
+    } else {
+      return nullptr;
+    }
+  }
+  return node;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 3) {
+    std::cerr << "usage: check_summary FILE CHECK...\n";
+    return 2;
+  }
+  std::ifstream in(argv[1]);
+  if (!in) {
+    std::cerr << "check_summary: cannot open '" << argv[1] << "'\n";
+    return 1;
+  }
+  json root;
+  try {
+    root = json::parse(in);
+  } catch (const std::exception& e) {
+    std::cerr << "check_summary: '" << argv[1] << "' is not valid JSON: " << e.what() << "\n";
+    return 1;
+  }
+  int failures = 0;
+  for (int a = 2; a < argc; ++a) {
+    const std::string check = argv[a];
+    const auto colon = check.find(':');
+    const std::string kind = check.substr(0, colon);
+    std::string rest = check.substr(colon + 1), pointer = rest, expected, tol;
+    if (const auto eq = rest.find('='); eq != std::string::npos) {
+      pointer = rest.substr(0, eq);
+      expected = rest.substr(eq + 1);
+      if (kind == "near") {
+        const auto c = expected.rfind(':');
+        tol = expected.substr(c + 1);
+        expected = expected.substr(0, c);
+      }
+    }
+    const json* node = resolve(root, pointer);
+    bool ok = false;
+    std::ostringstream msg;
+    msg << kind << " " << pointer << ": ";
+    if (!node) {
+      msg << "missing";
+    } else if (kind == "exists") {
+      ok = true;
+      msg << "present";
+    } else if (kind == "size") {
+      ok = node->size() == std::stoul(expected);
+      msg << "size " << node->size() << ", expected " << expected;
+    } else if (kind == "eq") {
+      json want;
+      try {
+        want = json::parse(expected);
+      } catch (...) {
+        want = expected;  // bare string
+      }
+      ok = (*node == want) || (node->is_number() && want.is_number() &&
+                               node->get<double>() == want.get<double>());
+      msg << node->dump() << ", expected " << want.dump();
+    } else if (node->is_number()) {
+      const double x = node->get<double>(), v = std::stod(expected);
+      if (kind == "near") {
+        const double rel = std::stod(tol);
+        ok = std::abs(x - v) <= rel * std::abs(v);
+        msg.precision(10);
+        msg << x << ", expected " << v << " ± " << rel * 100 << "% (rel. error "
+            << (v != 0 ? std::abs(x - v) / std::abs(v) : std::abs(x)) << ")";
+      } else if (kind == "ge") {
+        ok = x >= v;
+        msg << x << " >= " << v;
+      } else if (kind == "le") {
+        ok = x <= v;
+        msg << x << " <= " << v;
+      } else {
+        msg << "unknown check kind";
+      }
+    } else {
+      msg << node->dump() << " is not a number";
+    }
+    std::cout << (ok ? "  ok    " : "  FAIL  ") << msg.str() << "\n";
+    failures += ok ? 0 : 1;
+  }
+  std::cout << (argc - 2 - failures) << " passed, " << failures << " failed" << std::endl;
+  return failures ? 1 : 0;
+}
