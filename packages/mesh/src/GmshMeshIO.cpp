@@ -187,7 +187,10 @@ void buildGeometryModel(const Geometry& geometry, double meshSize)
   for (const auto& p : dents) dtags.push_back(p.second);
   const int g = gmsh::model::addPhysicalGroup(dim, dtags, 100);
   gmsh::model::setPhysicalName(dim, g, "Domain");
+  // The size is MeshSizeMax alone: OpenCASCADE points carry default sizes (about a tenth of the
+  // model) that would otherwise cap the element size and make coarse requests ineffective.
   gmsh::option::setNumber("Mesh.MeshSizeMax", meshSize);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::model::mesh::generate(dim);
 }

@@ -66,7 +66,7 @@ TEUCHOS_UNIT_TEST(GmshFile, HalfBallFileMatchesTheScene)
   TEST_EQUALITY(m->numElements(), scene->numElements());
   TEST_FLOATING_EQUALITY(m->measure(), scene->measure(), 1e-12);
   TEST_FLOATING_EQUALITY(m->boundaryMeasure("Cap"), scene->boundaryMeasure("Cap"), 1e-12);
-  TEST_COMPARE(std::abs(m->measure() - 2 * M_PI / 3), <, 0.1);
+  TEST_COMPARE(std::abs(m->measure() - 2 * M_PI / 3), <, 0.2);  // coarse inscribed polyhedron
 }
 
 TEUCHOS_UNIT_TEST(GmshFile, MissingFileNamesTheFile)
