@@ -352,3 +352,31 @@ TEUCHOS_UNIT_TEST(DirectSolver, SameResultOnOneRank)
 }
 
 }  // namespace
+
+namespace {
+
+using namespace sc::solvers;
+using namespace sc::solvers::testing;
+
+// MUMPS with no workspace relaxation (ICNTL(14) = 0) on the non-symmetric saddle point, whose
+// delayed pivots need more than the analysis estimate: it must still succeed, through the
+// automatic retries with a doubled ICNTL(14) if MUMPS reports -8/-9.
+TEUCHOS_UNIT_TEST(MumpsSolver, WorkspaceRetry)
+{
+  auto comm = Tpetra::getDefaultComm();
+  auto S = saddlePoint(comm, kSaddleN, kScaleM, kScaleB);
+  Teuchos::RCP<const CrsMatrix> A = withReplacedRows(*S, 7, 0.4, kSaddleNu);
+  Teuchos::ParameterList pl;
+  pl.set("Type", std::string("MUMPS"));
+  pl.sublist("MUMPS").set("Memory relaxation percent", 0);
+  pl.sublist("MUMPS").set("Workspace retries", 5);
+  auto solver = createDirectSolver(pl);
+  const BlockErrors e = solveSaddle(*solver, A);
+  out << "block errors " << e.first << " " << e.second << " after "
+      << solver->lastSolveStats().workspaceRetries << " workspace retries\n";
+  TEST_COMPARE(e.max(), <=, 1e-8);
+  // 3 at 1, 2 and 4 ranks (ICNTL(14) 0 -> 20 -> 40 -> 80) when written
+  TEST_COMPARE(solver->lastSolveStats().workspaceRetries, >=, 1);
+}
+
+}  // namespace
