@@ -46,7 +46,7 @@ BisectionRefiner::BisectionRefiner(Teuchos::RCP<const SimplexMesh> initialMesh,
     partCurved_[i] = project_ && geometry_->isCurved(names_[i]);
   coords_ = m.coordinates();
   verts_ = m.elementVertices();
-  const int ne = m.numElements(), nve = dim_ + 1;
+  const int ne = m.numElements();
   gen_.assign(ne, 0);
 
   // Strict global order of edges (length, then vertex ids) so that neighbours choose the same
@@ -104,7 +104,6 @@ BisectionRefiner::BisectionRefiner(Teuchos::RCP<const SimplexMesh> initialMesh,
       }
     }
   }
-  (void)nve;
 }
 
 // Store tetrahedron w (4 vertices) in `slot`: markers[i] is the marked edge of the face opposite
@@ -204,14 +203,12 @@ void BisectionRefiner::bisectTriangle(int e)
     boundaryEdges_.insert(edgeKey(v0, m), p);
     boundaryEdges_.insert(edgeKey(m, v1), p);
   }
-  v[0] = v2, v[1] = v0, v[2] = m;  // child 1 stays in slot e (may reallocate below: v invalid)
-  const int child = static_cast<int>(gen_.size());
+  v[0] = v2, v[1] = v0, v[2] = m;  // first child stays in slot e (v is invalid after the insert)
   verts_.insert(verts_.end(), {v1, v2, m});
   gen_[e] += 1;
   gen_.push_back(gen_[e]);
   target_.push_back(target_[e]);
   ancestor_.push_back(ancestor_[e]);
-  (void)child;
 }
 
 void BisectionRefiner::bisectTetrahedron(int e)

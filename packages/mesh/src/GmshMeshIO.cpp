@@ -68,7 +68,6 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
 {
   const int linearType = dim == 2 ? 2 : 4;  // 3-node triangle, 4-node tetrahedron
   const int faceType = dim == 2 ? 1 : 2;    // 2-node line, 3-node triangle
-  const int nve = dim + 1;
 
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> elemTags, nodeTags;
@@ -153,7 +152,6 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
       }
     }
   }
-  (void)nve;
   labels.vertex = usedTags;
   return Teuchos::rcp(new SimplexMesh(dim, std::move(coords), std::move(elemVerts), bfv, bpart,
                                       names, origin, &labels));

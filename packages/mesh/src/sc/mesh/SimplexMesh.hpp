@@ -21,7 +21,9 @@
 // not copyable: share it through Teuchos::RCP<const SimplexMesh>.
 
 #include <array>
+#include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sc::mesh {
@@ -149,7 +151,6 @@ private:
   std::string describeFace(const int* v) const;
   std::string vertexLabel(int v) const;
   std::string elementLabel(int e) const;
-  const Labels* labels_ = nullptr;  // only during construction
 
   int dim_;
   std::string origin_;
@@ -167,6 +168,7 @@ private:
   std::vector<int> vertElemPtr_, vertElems_;
   std::vector<int> edgeVerts_, elemEdges_;
   std::vector<char> boundaryVertex_;
+  const Labels* labels_ = nullptr;  // only during construction (error messages)
 };
 
 }  // namespace sc::mesh
