@@ -1,0 +1,354 @@
+#include "sc/assembly/MixedElasticityAssembler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_Time.hpp>
+#include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_FEMultiVector.hpp>
+#include <Tpetra_Import.hpp>
+
+#include <sc/core/Error.hpp>
+#include <sc/disc/ElementValues.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+
+namespace sc::assembly {
+namespace {
+
+using FEGraph = Tpetra::FECrsGraph<>;
+using FEMatrix = Tpetra::FECrsMatrix<>;
+using FEVector = Tpetra::FEMultiVector<>;
+using GO = Tpetra::Map<>::global_ordinal_type;
+
+// Solve the small dense system M c = r (Gaussian elimination with partial pivoting).
+void solveDense(std::vector<double> M, std::vector<double>& r, int n)
+{
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(M[i * n + k]) > std::abs(M[p * n + k]))
+        p = i;
+    SC_THROW_IF(std::abs(M[p * n + k]) < 1e-300, core::InternalError,
+                "singular face mass matrix in the traction projection");
+    if (p != k) {
+      for (int j = 0; j < n; ++j)
+        std::swap(M[k * n + j], M[p * n + j]);
+      std::swap(r[k], r[p]);
+    }
+    for (int i = k + 1; i < n; ++i) {
+      const double f = M[i * n + k] / M[k * n + k];
+      for (int j = k; j < n; ++j)
+        M[i * n + j] -= f * M[k * n + j];
+      r[i] -= f * r[k];
+    }
+  }
+  for (int k = n - 1; k >= 0; --k) {
+    for (int j = k + 1; j < n; ++j)
+      r[k] -= M[k * n + j] * r[j];
+    r[k] /= M[k * n + k];
+  }
+}
+
+}  // namespace
+
+struct MixedElasticityAssembler::Impl {
+  Teuchos::RCP<const Map> owned, overlap;
+  Teuchos::RCP<FEGraph> graph;
+  Teuchos::RCP<FEMatrix> matrix;
+  Teuchos::RCP<FEVector> rhs;
+  Teuchos::RCP<const Tpetra::Import<>> importer;  // owned -> overlap
+};
+
+MixedElasticityAssembler::MixedElasticityAssembler(
+    Teuchos::RCP<const disc::MixedElasticitySpace> space,
+    Teuchos::RCP<const Teuchos::Comm<int>> comm)
+  : space_(std::move(space)), comm_(std::move(comm)), impl_(std::make_unique<Impl>())
+{
+  buildGraph();
+}
+
+MixedElasticityAssembler::~MixedElasticityAssembler() = default;
+
+void MixedElasticityAssembler::buildGraph()
+{
+  const double t0 = Teuchos::Time::wallTime();
+  const auto& S = *space_;
+  const GO n = S.numGlobalDofs();
+  const auto& ownedDofs = S.ownedDofs();
+  // FECrsGraph wants the overlap map to list the owned GIDs first, in the owned map's order.
+  std::vector<GO> overlapGids(ownedDofs.begin(), ownedDofs.end());
+  for (long long g : S.overlapDofs())
+    if (S.dofOwner(g) != S.rank())
+      overlapGids.push_back(g);
+  impl_->owned = Teuchos::rcp(new Map(n, Teuchos::ArrayView<const GO>(ownedDofs.data(), ownedDofs.size()), 0, comm_));
+  impl_->overlap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                        Teuchos::ArrayView<const GO>(overlapGids), 0, comm_));
+  impl_->importer = Teuchos::rcp(new Tpetra::Import<>(impl_->owned, impl_->overlap));
+
+  // Exact row lengths of the overlap rows: the union of the DOFs of the elements around a row.
+  const int L = S.localSize();
+  const auto& elements = S.ownedElements();
+  const std::size_t nRows = overlapGids.size();
+  std::vector<int> rowPtr(nRows + 1, 0);
+  for (int e : elements) {
+    const long long* g = S.elementDofs(e);
+    for (int i = 0; i < L; ++i)
+      ++rowPtr[impl_->overlap->getLocalElement(g[i]) + 1];
+  }
+  for (std::size_t r = 0; r < nRows; ++r)
+    rowPtr[r + 1] += rowPtr[r];
+  std::vector<int> rowElems(rowPtr[nRows]);
+  {
+    std::vector<int> fill(rowPtr.begin(), rowPtr.end() - 1);
+    for (int e : elements) {
+      const long long* g = S.elementDofs(e);
+      for (int i = 0; i < L; ++i)
+        rowElems[fill[impl_->overlap->getLocalElement(g[i])]++] = e;
+    }
+  }
+  Kokkos::DualView<std::size_t*, Map::device_type> counts("row lengths", nRows);
+  std::vector<std::vector<GO>> columns(nRows);
+  auto countsHost = counts.view_host();
+  for (std::size_t r = 0; r < nRows; ++r) {
+    auto& cols = columns[r];
+    for (int k = rowPtr[r]; k < rowPtr[r + 1]; ++k) {
+      const long long* g = S.elementDofs(rowElems[k]);
+      cols.insert(cols.end(), g, g + L);
+    }
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    countsHost(r) = cols.size();
+  }
+  counts.modify_host();
+  counts.sync_device();
+  Kokkos::DualView<const std::size_t*, Map::device_type> constCounts = counts;
+  impl_->graph = Teuchos::rcp(new FEGraph(impl_->owned, impl_->overlap, constCounts));
+  impl_->graph->beginAssembly();
+  for (std::size_t r = 0; r < nRows; ++r)
+    impl_->graph->insertGlobalIndices(overlapGids[r], Teuchos::ArrayView<const GO>(columns[r]));
+  impl_->graph->endAssembly();
+  impl_->matrix = Teuchos::rcp(new FEMatrix(impl_->graph));
+  impl_->rhs = Teuchos::rcp(new FEVector(impl_->owned, impl_->graph->getImporter(), 1));
+  stats_.graphSeconds = Teuchos::Time::wallTime() - t0;
+  stats_.ownedElements = static_cast<long long>(elements.size());
+  stats_.nonzeros = static_cast<long long>(impl_->graph->getGlobalNumEntries());
+}
+
+void MixedElasticityAssembler::assemble(const ElasticityData& data)
+{
+  const double t0 = Teuchos::Time::wallTime();
+  const auto& S = *space_;
+  const auto& m = S.mesh();
+  const int d = S.dim(), k = S.degree(), L = S.localSize(), r = S.numRotationComponents();
+  const int nRT = S.stressBasisSize(), nDP = S.displacementBasisSize(), nCP = S.rotationBasisSize();
+  const double inv2mu = 1.0 / (2.0 * data.material.shearModulus());
+  const double cd = data.material.complianceCoefficient(d);
+  const core::ExactSolution* exact = data.exactSolution;
+  for (const auto& bc : data.boundaryConditions.conditions) {
+    SC_THROW_IF(bc.fromExactSolution && !exact, core::InputError,
+                "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution', but "
+                    << "'Problem/Exact solution' is 'None'.");
+    SC_THROW_IF(bc.type == core::BoundaryType::Contact, core::InternalError,
+                "the elasticity assembler got a Contact boundary ('" << bc.boundary
+                    << "'); contact rows belong to the contact package");
+  }
+
+  disc::ElementValues ev(S, 2 * k + 2);
+  disc::FaceValues fv(S, 2 * k + 2);
+  std::vector<double> K(static_cast<std::size_t>(L) * L), F(L);
+  std::vector<double> G(static_cast<std::size_t>(nRT) * nRT);
+  std::vector<double> P(static_cast<std::size_t>(d) * d * nRT * nRT);
+  std::vector<GO> gids(L);
+  std::vector<char> constrained(L);
+  std::vector<double> constrainedValue(L);
+  long long nConstrained = 0;
+
+  auto& A = *impl_->matrix;
+  auto& b = *impl_->rhs;
+  A.beginAssembly();
+  b.beginAssembly();
+  A.setAllToScalar(0.0);
+  b.putScalar(0.0);
+
+  for (int e : S.ownedElements()) {
+    std::fill(K.begin(), K.end(), 0.0);
+    std::fill(F.begin(), F.end(), 0.0);
+    std::fill(G.begin(), G.end(), 0.0);
+    std::fill(P.begin(), P.end(), 0.0);
+    std::fill(constrained.begin(), constrained.end(), 0);
+    ev.reinit(e);
+    auto KK = [&](int i, int j) -> double& { return K[static_cast<std::size_t>(i) * L + j]; };
+    for (int q = 0; q < ev.numPoints(); ++q) {
+      const double w = ev.weight(q);
+      for (int a = 0; a < nRT; ++a)
+        for (int bb = 0; bb < nRT; ++bb) {
+          double dot = 0.0;
+          for (int c = 0; c < d; ++c)
+            dot += ev.stress(a, q, c) * ev.stress(bb, q, c);
+          G[a * nRT + bb] += w * dot;
+          for (int i = 0; i < d; ++i)
+            for (int j = 0; j < d; ++j)
+              P[((i * d + j) * nRT + a) * nRT + bb] += w * ev.stress(a, q, i) * ev.stress(bb, q, j);
+        }
+      // B1: (div σ_i, v_i); B2: (as σ, η).
+      for (int a = 0; a < nDP; ++a)
+        for (int bb = 0; bb < nRT; ++bb) {
+          const double v = w * ev.displacement(a, q) * ev.stressDiv(bb, q);
+          for (int i = 0; i < d; ++i) {
+            KK(S.displacementOffset(i) + a, S.stressOffset(i) + bb) += v;
+            KK(S.stressOffset(i) + bb, S.displacementOffset(i) + a) += v;
+          }
+        }
+      for (int a = 0; a < nCP; ++a)
+        for (int bb = 0; bb < nRT; ++bb) {
+          const double eta = w * ev.rotation(a, q);
+          // as τ: 2D τ12 − τ21; 3D (τ32 − τ23, τ13 − τ31, τ21 − τ12) (DESIGN §1), 0-based
+          // (row, component) pairs with their sign.
+          struct Term { int comp, row, col; double sign; };
+          static const Term terms2D[] = {{0, 0, 1, 1.0}, {0, 1, 0, -1.0}};
+          static const Term terms3D[] = {{0, 2, 1, 1.0}, {0, 1, 2, -1.0}, {1, 0, 2, 1.0},
+                                         {1, 2, 0, -1.0}, {2, 1, 0, 1.0}, {2, 0, 1, -1.0}};
+          const Term* terms = d == 2 ? terms2D : terms3D;
+          const int nTerms = d == 2 ? 2 : 6;
+          for (int t = 0; t < nTerms; ++t) {
+            const double v = terms[t].sign * eta * ev.stress(bb, q, terms[t].col);
+            KK(S.rotationOffset(terms[t].comp) + a, S.stressOffset(terms[t].row) + bb) += v;
+            KK(S.stressOffset(terms[t].row) + bb, S.rotationOffset(terms[t].comp) + a) += v;
+          }
+        }
+      if (exact) {
+        double f[3];
+        exact->bodyForce(ev.point(q), f);
+        for (int i = 0; i < d; ++i)
+          for (int a = 0; a < nDP; ++a)
+            F[S.displacementOffset(i) + a] -= w * f[i] * ev.displacement(a, q);
+      }
+    }
+    // A: (1/2μ)[δ_ij (φ_a, φ_b) − c_d (φ_a[i], φ_b[j])].
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j < d; ++j)
+        for (int a = 0; a < nRT; ++a)
+          for (int bb = 0; bb < nRT; ++bb)
+            KK(S.stressOffset(i) + a, S.stressOffset(j) + bb) +=
+                inv2mu * ((i == j ? G[a * nRT + bb] : 0.0) - cd * P[((i * d + j) * nRT + a) * nRT + bb]);
+
+    // Boundary faces: natural u_D, essential t (projected) and free (t = 0).
+    const int* faces = m.elementFaces(e);
+    for (int lf = 0; lf <= d; ++lf) {
+      const int f = faces[lf];
+      if (!m.isBoundaryFace(f))
+        continue;
+      const core::BoundaryCondition* bc =
+          data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
+      const core::BoundaryType type = bc ? bc->type : core::BoundaryType::Free;
+      const auto& faceDofs = S.stressFaceLocalDofs(lf);
+      const int nF = static_cast<int>(faceDofs.size());
+      if (type == core::BoundaryType::Displacement) {
+        fv.reinit(e, lf);
+        for (int q = 0; q < fv.numPoints(); ++q) {
+          double uD[3] = {0, 0, 0};
+          if (bc->fromExactSolution)
+            exact->displacement(fv.point(q), uD);
+          else
+            std::copy(bc->value.begin(), bc->value.end(), uD);
+          for (int i = 0; i < d; ++i)
+            for (int a : faceDofs)
+              F[S.stressOffset(i) + a] += fv.weight(q) * uD[i] * fv.stressNormal(a, q);
+        }
+        continue;
+      }
+      // Traction or free: σ_i·n = t_i on the face, as the L² projection onto the normal traces
+      // of the face DOFs (only these have a non-zero normal trace on the face).
+      std::vector<double> values(static_cast<std::size_t>(d) * nF, 0.0);
+      const bool zero = type == core::BoundaryType::Free ||
+                        (!bc->fromExactSolution && std::all_of(bc->value.begin(), bc->value.end(),
+                                                               [](double v) { return v == 0.0; }));
+      if (!zero) {
+        fv.reinit(e, lf);
+        std::vector<double> M(static_cast<std::size_t>(nF) * nF, 0.0);
+        std::vector<std::vector<double>> rhs(d, std::vector<double>(nF, 0.0));
+        for (int q = 0; q < fv.numPoints(); ++q) {
+          double t[3] = {0, 0, 0};
+          if (bc->fromExactSolution)
+            exact->traction(fv.point(q), fv.normal().data(), t);
+          else
+            std::copy(bc->value.begin(), bc->value.end(), t);
+          for (int l = 0; l < nF; ++l) {
+            const double pl = fv.stressNormal(faceDofs[l], q);
+            for (int j = 0; j < nF; ++j)
+              M[l * nF + j] += fv.weight(q) * pl * fv.stressNormal(faceDofs[j], q);
+            for (int i = 0; i < d; ++i)
+              rhs[i][l] += fv.weight(q) * t[i] * pl;
+          }
+        }
+        for (int i = 0; i < d; ++i) {
+          solveDense(M, rhs[i], nF);
+          for (int l = 0; l < nF; ++l)
+            values[i * nF + l] = rhs[i][l];
+        }
+      }
+      for (int i = 0; i < d; ++i)
+        for (int l = 0; l < nF; ++l) {
+          const int c = S.stressOffset(i) + faceDofs[l];
+          constrained[c] = 1;
+          constrainedValue[c] = values[i * nF + l];
+        }
+    }
+    // Symmetric elimination of the constrained DOFs, with a diagonal of the A block's size.
+    double diag = 0.0;
+    int nd = 0;
+    for (int i = 0; i < d * nRT; ++i)
+      if (!constrained[i]) {
+        diag += std::abs(KK(i, i));
+        ++nd;
+      }
+    diag = nd ? diag / nd : inv2mu;
+    for (int c = 0; c < L; ++c) {
+      if (!constrained[c])
+        continue;
+      ++nConstrained;
+      const double g = constrainedValue[c];
+      for (int i = 0; i < L; ++i) {
+        if (i != c)
+          F[i] -= KK(i, c) * g;
+        KK(i, c) = 0.0;
+        KK(c, i) = 0.0;
+      }
+      KK(c, c) = diag;
+      F[c] = diag * g;
+    }
+    const long long* g = S.elementDofs(e);
+    std::copy(g, g + L, gids.begin());
+    for (int i = 0; i < L; ++i) {
+      A.sumIntoGlobalValues(gids[i], Teuchos::ArrayView<const GO>(gids),
+                            Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
+      b.sumIntoGlobalValue(gids[i], 0, F[i]);
+    }
+  }
+  A.endAssembly();
+  b.endAssembly();
+  stats_.constrainedDofs = nConstrained;
+  stats_.assemblySeconds = Teuchos::Time::wallTime() - t0;
+  (void)r;
+}
+
+Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::matrix() const { return impl_->matrix; }
+Teuchos::RCP<const MultiVector> MixedElasticityAssembler::rhs() const { return impl_->rhs; }
+Teuchos::RCP<const Map> MixedElasticityAssembler::ownedMap() const { return impl_->owned; }
+Teuchos::RCP<const Map> MixedElasticityAssembler::overlapMap() const { return impl_->overlap; }
+
+Teuchos::RCP<MultiVector> MixedElasticityAssembler::createVector() const
+{
+  return Teuchos::rcp(new MultiVector(impl_->owned, 1));
+}
+
+Teuchos::RCP<MultiVector> MixedElasticityAssembler::toOverlap(const MultiVector& owned) const
+{
+  auto v = Teuchos::rcp(new MultiVector(impl_->overlap, owned.getNumVectors()));
+  v->doImport(owned, *impl_->importer, Tpetra::INSERT);
+  return v;
+}
+
+}  // namespace sc::assembly

@@ -1,0 +1,159 @@
+// Errors against exact solutions and cell averages for output (issue #4 item 4).
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <sc/disc/ElementValues.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+
+#include "sc/assembly/MixedElasticityAssembler.hpp"
+
+namespace sc::assembly {
+namespace {
+
+// The element's coefficients from an overlap-map vector.
+void gatherCoefficients(const disc::MixedElasticitySpace& S, const Map& overlap,
+                        const Teuchos::ArrayRCP<const double>& x, int e, std::vector<double>& c)
+{
+  const long long* g = S.elementDofs(e);
+  for (int i = 0; i < S.localSize(); ++i)
+    c[i] = x[overlap.getLocalElement(g[i])];
+}
+
+// σ_h, div σ_h, u_h, θ_h of one element at cubature point q.
+struct PointValues {
+  double sigma[9], divSigma[3], u[3], theta[3];
+};
+
+void evaluate(const disc::MixedElasticitySpace& S, const disc::ElementValues& ev,
+              const std::vector<double>& c, int q, PointValues& v)
+{
+  const int d = S.dim(), nRT = S.stressBasisSize(), nP = S.displacementBasisSize();
+  for (int i = 0; i < d; ++i) {
+    v.divSigma[i] = 0.0;
+    for (int j = 0; j < d; ++j)
+      v.sigma[i * d + j] = 0.0;
+    for (int a = 0; a < nRT; ++a) {
+      const double ca = c[S.stressOffset(i) + a];
+      v.divSigma[i] += ca * ev.stressDiv(a, q);
+      for (int j = 0; j < d; ++j)
+        v.sigma[i * d + j] += ca * ev.stress(a, q, j);
+    }
+    v.u[i] = 0.0;
+    for (int a = 0; a < nP; ++a)
+      v.u[i] += c[S.displacementOffset(i) + a] * ev.displacement(a, q);
+  }
+  for (int r = 0; r < S.numRotationComponents(); ++r) {
+    v.theta[r] = 0.0;
+    for (int a = 0; a < S.rotationBasisSize(); ++a)
+      v.theta[r] += c[S.rotationOffset(r) + a] * ev.rotation(a, q);
+  }
+}
+
+}  // namespace
+
+ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiVector& solution,
+                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm)
+{
+  const auto& S = assembler.space();
+  const int d = S.dim(), r = S.numRotationComponents();
+  auto overlapVec = assembler.toOverlap(solution);
+  auto x = overlapVec->getData(0);
+  const Map& overlap = *assembler.overlapMap();
+  disc::ElementValues ev(S, 2 * S.degree() + 4);
+  std::vector<double> c(S.localSize());
+  double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
+  PointValues v;
+  for (int e : S.ownedElements()) {
+    ev.reinit(e);
+    gatherCoefficients(S, overlap, x, e, c);
+    for (int q = 0; q < ev.numPoints(); ++q) {
+      evaluate(S, ev, c, q, v);
+      double sigma[9], f[3], u[3], theta[3];
+      exact.stress(ev.point(q), sigma);
+      exact.bodyForce(ev.point(q), f);
+      exact.displacement(ev.point(q), u);
+      exact.rotation(ev.point(q), theta);
+      const double w = ev.weight(q);
+      for (int i = 0; i < d * d; ++i) {
+        local[0] += w * std::pow(sigma[i] - v.sigma[i], 2);
+        local[4] += w * sigma[i] * sigma[i];
+      }
+      for (int i = 0; i < d; ++i) {
+        local[1] += w * std::pow(-f[i] - v.divSigma[i], 2);  // div σ = −f
+        local[5] += w * f[i] * f[i];
+        local[2] += w * std::pow(u[i] - v.u[i], 2);
+        local[6] += w * u[i] * u[i];
+      }
+      for (int i = 0; i < r; ++i) {
+        local[3] += w * std::pow(theta[i] - v.theta[i], 2);
+        local[7] += w * theta[i] * theta[i];
+      }
+    }
+  }
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 8, local, global);
+  ErrorNorms n;
+  n.stress = std::sqrt(global[0]);
+  n.stressDiv = std::sqrt(global[1]);
+  n.displacement = std::sqrt(global[2]);
+  n.rotation = std::sqrt(global[3]);
+  n.stressNorm = std::sqrt(global[4]);
+  n.stressDivNorm = std::sqrt(global[5]);
+  n.displacementNorm = std::sqrt(global[6]);
+  n.rotationNorm = std::sqrt(global[7]);
+  return n;
+}
+
+CellAverages computeCellAverages(const MixedElasticityAssembler& assembler,
+                                 const MultiVector& solution)
+{
+  const auto& S = assembler.space();
+  const int d = S.dim(), r = S.numRotationComponents();
+  auto overlapVec = assembler.toOverlap(solution);
+  auto x = overlapVec->getData(0);
+  const Map& overlap = *assembler.overlapMap();
+  disc::ElementValues ev(S, 2 * S.degree());
+  std::vector<double> c(S.localSize());
+  CellAverages out;
+  PointValues v;
+  for (int e : S.ownedElements()) {
+    ev.reinit(e);
+    gatherCoefficients(S, overlap, x, e, c);
+    double sigma[9] = {0}, u[3] = {0}, theta[3] = {0}, vol = 0.0;
+    for (int q = 0; q < ev.numPoints(); ++q) {
+      evaluate(S, ev, c, q, v);
+      const double w = ev.weight(q);
+      vol += w;
+      for (int i = 0; i < d * d; ++i)
+        sigma[i] += w * v.sigma[i];
+      for (int i = 0; i < d; ++i)
+        u[i] += w * v.u[i];
+      for (int i = 0; i < r; ++i)
+        theta[i] += w * v.theta[i];
+    }
+    double trace = 0.0;
+    for (int i = 0; i < d * d; ++i)
+      sigma[i] /= vol;
+    for (int i = 0; i < d; ++i)
+      trace += sigma[i * d + i];
+    // von Mises of the (plane-strain: in-plane part of the) stress: sqrt(3/2 s:s), s = dev σ.
+    double ss = 0.0;
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j < d; ++j) {
+        const double s = 0.5 * (sigma[i * d + j] + sigma[j * d + i]) - (i == j ? trace / d : 0.0);
+        ss += s * s;
+      }
+    out.stress.insert(out.stress.end(), sigma, sigma + d * d);
+    out.vonMises.push_back(std::sqrt(1.5 * ss));
+    out.pressure.push_back(-trace / d);
+    for (int i = 0; i < d; ++i)
+      out.displacement.push_back(u[i] / vol);
+    for (int i = 0; i < r; ++i)
+      out.rotation.push_back(theta[i] / vol);
+  }
+  return out;
+}
+
+}  // namespace sc::assembly

@@ -1,0 +1,109 @@
+#pragma once
+// Shared by the assembly tests: solve a verification problem (an exact solution with Dirichlet
+// data on some sides and tractions on the others) on a scene mesh with uniform refinements.
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/core/ExactSolution.hpp>
+#include <sc/core/Parameters.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/MeshFactory.hpp>
+#include <sc/mesh/Partitioning.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+#include <sc/solvers/DirectSolver.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
+
+namespace sc::test {
+
+struct LevelResult {
+  double h = 0.0;
+  long long dofs = 0;
+  assembly::ErrorNorms errors;
+};
+
+struct VerificationSetup {
+  std::string source = "Unit square";
+  int dim = 2;
+  double meshSize = 0.5;
+  int levels = 1;
+  int degree = 1;
+  double nu = 0.3;
+  double E = 1.0;
+  std::string exact = "Manufactured smooth";
+  std::string solver = "KLU2";
+};
+
+/// Boundary data: displacement from the exact solution on Left/Bottom(/Front), traction on the rest.
+inline core::BoundaryConditions verificationBoundaryConditions(int dim)
+{
+  core::BoundaryConditions bcs;
+  const std::vector<std::string> dirichlet = dim == 2 ? std::vector<std::string>{"Left", "Bottom"}
+                                                      : std::vector<std::string>{"Left", "Bottom", "Front"};
+  const std::vector<std::string> neumann = dim == 2 ? std::vector<std::string>{"Right", "Top"}
+                                                    : std::vector<std::string>{"Right", "Top", "Back"};
+  for (const auto& n : dirichlet)
+    bcs.conditions.push_back({n, core::BoundaryType::Displacement, {}, true});
+  for (const auto& n : neumann)
+    bcs.conditions.push_back({n, core::BoundaryType::Traction, {}, true});
+  return bcs;
+}
+
+inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
+                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
+{
+  Teuchos::ParameterList meshList;
+  meshList.set("Source", s.source);
+  meshList.set("Initial mesh size", s.meshSize);
+  auto refiner = mesh::MeshFactory::build(meshList, s.dim);
+  core::Material material{s.E, s.nu};
+  auto exact = core::createExactSolution(s.exact, s.dim, material);
+  Teuchos::ParameterList solverList;
+  solverList.set("Type", s.solver);
+  auto solver = solvers::createDirectSolver(solverList);
+  solver->setSymmetric(true);
+  std::vector<LevelResult> results;
+  for (int level = 0; level < s.levels; ++level) {
+    if (level > 0)
+      refiner->refineUniformly();
+    auto m = refiner->mesh();
+    auto owner = mesh::partitionElements(*m, *comm);
+    auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank()));
+    assembly::MixedElasticityAssembler assembler(space, comm);
+    assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};
+    assembler.assemble(data);
+    auto x = assembler.createVector();
+    solver->setOperator(assembler.matrix());
+    solver->symbolicFactorization();
+    solver->numericFactorization();
+    solver->solve(*assembler.rhs(), *x);
+    LevelResult r;
+    r.h = m->meshSize();
+    r.dofs = space->numGlobalDofs();
+    r.errors = assembly::computeErrors(assembler, *x, *exact, *comm);
+    results.push_back(r);
+  }
+  return results;
+}
+
+/// Least-squares slope of log(error) against log(h).
+inline double fittedRate(const std::vector<LevelResult>& r, double assembly::ErrorNorms::*field)
+{
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const int n = static_cast<int>(r.size());
+  for (const auto& l : r) {
+    const double x = std::log(l.h), y = std::log(l.errors.*field);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+}  // namespace sc::test
