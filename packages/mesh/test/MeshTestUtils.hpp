@@ -18,7 +18,7 @@ inline bool contains(const std::string& text, const std::string& what)
 
 /// Conformity: every face has one (boundary, with a part id) or two (interior) elements, faces of
 /// the elements are consistent. Returns an empty string if fine, else what is wrong.
-inline std::string conformityProblem(const SimplexMesh& m)
+inline std::string conformityProblem(const SimplexMesh& m, bool allowUnnamed = false)
 {
   std::vector<int> count(m.numFaces(), 0);
   for (int e = 0; e < m.numElements(); ++e)
@@ -32,7 +32,7 @@ inline std::string conformityProblem(const SimplexMesh& m)
   }
   if (nb != static_cast<long>(m.boundaryFaces().size())) return "boundary face count";
   // A hanging face would show up as an untagged boundary face.
-  if (m.hasBoundary("Unnamed")) return "untagged boundary faces (hanging faces?)";
+  if (!allowUnnamed && m.hasBoundary("Unnamed")) return "untagged boundary faces (hanging faces?)";
   if (m.eulerCharacteristic() != 1) return "Euler characteristic " + std::to_string(m.eulerCharacteristic());
   return "";
 }

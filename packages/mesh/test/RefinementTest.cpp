@@ -13,6 +13,7 @@
 
 #include <Teuchos_UnitTestHarness.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -313,6 +314,61 @@ TEUCHOS_UNIT_TEST(Refinement, UniformUnitCubeMultipliesByEight)
     TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
     TEST_FLOATING_EQUALITY(r->mesh()->measure(), 1.0, 1e-12);  // analytic
   }
+}
+
+// Kuhn's subdivision of a 3x3x3 grid of cubes (6 tetrahedra per cube around the main diagonal)
+// satisfies Maubach's matching condition; AMP then is Maubach bisection (tags 3 -> 2 -> 1), whose
+// theory gives: three bisections of a tag-3 or tag-2 tetrahedron split all six of its edges, so
+// after one local step (tags 3 and 2 only) a uniform level is exactly x8 with no closure; and the
+// descendants of Kuhn's tetrahedron fall into at most 3 similarity classes with dihedral angles
+// 45°, 60°, 90° (minimum 45°, analytic). (Three bisections of a tag-1 tetrahedron leave one edge
+// unsplit, so after several local steps a uniform level needs some closure: not tested as x8.)
+TEUCHOS_UNIT_TEST(Refinement, KuhnCubeMeshBehavesLikeMaubachBisection)
+{
+  const int n = 3;
+  std::vector<double> x;
+  auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) x.insert(x.end(), {double(i), double(j), double(k)});
+  std::vector<int> t;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        int perm[3] = {0, 1, 2};
+        do {
+          int c[3] = {i, j, k};
+          t.push_back(id(c[0], c[1], c[2]));
+          for (int s = 0; s < 3; ++s) {
+            ++c[perm[s]];
+            t.push_back(id(c[0], c[1], c[2]));
+          }
+        } while (std::next_permutation(perm, perm + 3));
+      }
+  auto mesh = Teuchos::rcp(new SimplexMesh(3, x, t, {}, {}, {}, "Kuhn cubes"));
+  BisectionRefiner r(mesh, Teuchos::null, false);
+  std::vector<int> marked;
+  for (int e = 0; e < r.mesh()->numElements(); e += 7) marked.push_back(e);
+  r.refine(marked);
+  for (int level = 0; level < 2; ++level) {
+    const int ne = r.mesh()->numElements();
+    r.refineUniformly();
+    TEST_EQUALITY(r.mesh()->numElements(), 8 * ne);
+    TEST_EQUALITY(conformityProblem(*r.mesh(), /*allowUnnamed=*/true), std::string());
+  }
+  // More local steps: still conforming and the same classes.
+  for (int cycle = 0; cycle < 3; ++cycle) {
+    marked.clear();
+    for (int e = 0; e < r.mesh()->numElements(); e += 97) marked.push_back(e);
+    r.refine(marked);
+    TEST_EQUALITY(conformityProblem(*r.mesh(), true), std::string());
+  }
+  const auto classes = similarityClasses(*r.mesh());
+  out << r.mesh()->numElements() << " tetrahedra, " << classes << " similarity classes, min dihedral "
+      << r.mesh()->minAngleDeg() << "\n";
+  TEST_COMPARE(classes, <=, 3u);
+  TEST_FLOATING_EQUALITY(r.mesh()->minAngleDeg(), 45.0, 1e-9);
+  TEST_FLOATING_EQUALITY(r.mesh()->measure(), 27.0, 1e-12);
 }
 
 }  // namespace

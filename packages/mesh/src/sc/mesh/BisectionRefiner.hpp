@@ -47,7 +47,10 @@ public:
   /// Bisect each marked element (indices into mesh()) once, plus the closure. Duplicates and an
   /// empty list are allowed (an empty list changes nothing but still records a step).
   const RefinementStep& refine(const std::vector<int>& markedElements);
-  /// One uniform level: every element bisected dim() times (×4 in 2D, ×8 in 3D) plus closure.
+  /// One uniform level: every element bisected dim() times, plus closure. 2D: always exactly ×4.
+  /// 3D: exactly ×8 from the initial mesh and from uniformly refined meshes; after local steps, an
+  /// element in the third phase of the bisection cycle (Maubach tag 1) keeps one edge unsplit after
+  /// three bisections, so the closure adds some elements (docs/mesh.md).
   const RefinementStep& refineUniformly();
 
   /// All steps so far (index 0 = first refinement of the initial mesh, or the first step after
