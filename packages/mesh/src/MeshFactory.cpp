@@ -2,6 +2,7 @@
 
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
+#include <sc/mesh/BoundarySimplexSplit.hpp>
 #include <sc/mesh/BoxGeometry.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
 #include <sc/mesh/HalfBallGeometry.hpp>
@@ -132,8 +133,9 @@ void broadcastString(const Teuchos::Comm<int>& comm, std::string& s)
 
 Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
                                       Teuchos::RCP<const SimplexMesh> initial,
-                                      Teuchos::RCP<const Geometry> geometry)
+                                      Teuchos::RCP<const Geometry> geometry, bool split)
 {
+  if (split) initial = splitElementsWithAllVerticesOnBoundary(*initial);
   auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
   for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
   return refiner;
@@ -142,9 +144,10 @@ Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
 }  // namespace
 
 Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
-                                                  int dimension, const Teuchos::Comm<int>& comm)
+                                                  int dimension, const Teuchos::Comm<int>& comm,
+                                                  bool splitBoundarySimplices)
 {
-  if (comm.getSize() == 1) return build(meshList, dimension);
+  if (comm.getSize() == 1) return build(meshList, dimension, splitBoundarySimplices);
   const Teuchos::ParameterList p = validated(meshList);  // same on every rank: throws everywhere
   auto geometry = buildGeometry(p, dimension);
   std::vector<double> coords;
@@ -181,15 +184,15 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
     nameList.push_back(names.substr(a, b - a));
   auto mesh = Teuchos::rcp(new SimplexMesh(dimension, std::move(coords), std::move(elems), bfv,
                                            bpart, nameList, origin));
-  return finish(p, mesh, geometry);
+  return finish(p, mesh, geometry, splitBoundarySimplices);
 }
 
 Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
-                                                  int dimension)
+                                                  int dimension, bool splitBoundarySimplices)
 {
   const Teuchos::ParameterList p = validated(meshList);
   auto geometry = buildGeometry(p, dimension);
-  return finish(p, initialMesh(p, dimension, geometry), geometry);
+  return finish(p, initialMesh(p, dimension, geometry), geometry, splitBoundarySimplices);
 }
 
 }  // namespace sc::mesh

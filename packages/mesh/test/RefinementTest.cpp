@@ -6,6 +6,7 @@
 #include "MeshTestUtils.hpp"
 
 #include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/BoundarySimplexSplit.hpp>
 #include <sc/mesh/BoxGeometry.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
 #include <sc/mesh/HalfBallGeometry.hpp>
@@ -369,6 +370,34 @@ TEUCHOS_UNIT_TEST(Refinement, KuhnCubeMeshBehavesLikeMaubachBisection)
   TEST_COMPARE(classes, <=, 3u);
   TEST_FLOATING_EQUALITY(r.mesh()->minAngleDeg(), 45.0, 1e-9);
   TEST_FLOATING_EQUALITY(r.mesh()->measure(), 27.0, 1e-12);
+}
+
+// DESIGN §2: after splitting the initial tetrahedra with all vertices on the boundary, none exist,
+// and bisection (uniform and local, with projection) never creates new ones. Measure unchanged.
+TEUCHOS_UNIT_TEST(Refinement, SplitBoundaryTetrahedraStayAbsent)
+{
+  auto g = Teuchos::rcp(new HalfBallGeometry(1.0));
+  auto initial = GmshMeshIO::meshGeometry(*g, 0.4);
+  const auto before = initial->elementsWithAllVerticesOnBoundary().size();
+  auto split = splitElementsWithAllVerticesOnBoundary(*initial);
+  out << before << " of " << initial->numElements() << " tetrahedra had all vertices on the boundary; "
+      << split->numElements() << " after splitting, min dihedral " << initial->minAngleDeg() << " -> "
+      << split->minAngleDeg() << "\n";
+  TEST_COMPARE(before, >, 0u);
+  TEST_EQUALITY(split->numElements(), initial->numElements() + 3 * static_cast<int>(before));
+  TEST_EQUALITY(split->elementsWithAllVerticesOnBoundary().size(), 0u);
+  TEST_FLOATING_EQUALITY(split->measure(), initial->measure(), 1e-13);
+  TEST_EQUALITY(conformityProblem(*split), std::string());
+  BisectionRefiner r(split, g, true);
+  r.refineUniformly();
+  TEST_EQUALITY(r.mesh()->elementsWithAllVerticesOnBoundary().size(), 0u);
+  for (int c = 0; c < 4; ++c) {
+    std::vector<int> marked;
+    for (int e = 0; e < r.mesh()->numElements(); e += 5) marked.push_back(e);
+    r.refine(marked);
+    TEST_EQUALITY(r.mesh()->elementsWithAllVerticesOnBoundary().size(), 0u);
+    TEST_EQUALITY(conformityProblem(*r.mesh()), std::string());
+  }
 }
 
 }  // namespace

@@ -26,14 +26,17 @@ public:
   /// Validate `meshList` (a copy is checked and completed with defaults; errors name
   /// 'Mesh/<key>'), check it against Problem/Dimension `dimension` (2 or 3), mesh the initial
   /// domain, apply Mesh/Uniform refinements, and return the refiner holding the current mesh.
+  /// splitBoundarySimplices: split initial elements with all vertices on the boundary at their
+  /// barycentre first (BoundarySimplexSplit.hpp; for 3D Taylor–Hood stability, DESIGN §2).
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
-                                              int dimension);
+                                              int dimension, bool splitBoundarySimplices = false);
 
   /// The same for a run on `comm`: rank 0 builds the initial mesh (Gmsh) and broadcasts it, so
   /// every rank holds the identical replicated mesh (and then identical refinements). An
   /// InputError on rank 0 is rethrown on every rank with the same message.
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
-                                              int dimension, const Teuchos::Comm<int>& comm);
+                                              int dimension, const Teuchos::Comm<int>& comm,
+                                              bool splitBoundarySimplices = false);
 
   /// The scene geometry of a validated list (null for "Gmsh file").
   static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,
