@@ -326,7 +326,7 @@ const RefinementStep& BisectionRefiner::run()
   std::vector<int> fill(step_->childrenPtr.begin(), step_->childrenPtr.end() - 1);
   for (int e = 0; e < ne; ++e) step_->children[fill[ancestor_[e]]++] = e;
 
-  mesh_ = buildMesh();
+  if (step_->numBisections > 0) mesh_ = buildMesh();  // nothing marked: keep the same mesh
   step_->secondsBisection = seconds(t0, t1);
   step_->secondsMeshBuild = seconds(t1, Clock::now());
   // Release per-call memory.

@@ -261,6 +261,12 @@ TEUCHOS_UNIT_TEST(Refinement, HistoryMapsChildrenToParents)
     if (!onArc) TEST_FLOATING_EQUALITY(sum, before->elementMeasure(p), 1e-12);
   }
   TEST_COMPARE(step.childrenPtr[1] - step.childrenPtr[0], >=, 2);
+  // An empty marking records an identity step and keeps the mesh object.
+  const auto current = r->mesh();
+  const auto& none = r->refine({});
+  TEST_EQUALITY(r->mesh().get(), current.get());
+  TEST_EQUALITY(none.numBisections, 0L);
+  TEST_EQUALITY(static_cast<int>(none.elementParent.size()), current->numElements());
   TEST_EQUALITY(static_cast<int>(step.newVertexParents.size()),
                 m.numVertices() - before->numVertices());
   TEST_EQUALITY(conformityProblem(m), std::string());
