@@ -3,6 +3,8 @@
 //   mpiexec -n 2 solvers_benchmark [--max-dofs=N] [--max-klu2-dofs=N] [--problems=a,b]
 //                                  [--solvers=KLU2,MUMPS] [--no-equilibrate]
 //                                  [--ordering=METIS|AMD|AMF|SCOTCH|PORD|QAMD|Auto] (MUMPS)
+//                                  [--general] (MUMPS LU, SYM = 0, also for symmetric problems)
+//   solvers_benchmark --print-parameters   (the "Linear Solver" keys, as in docs/solvers.md)
 //   problems: poisson2d (5-point), poisson3d (7-point), saddle (the scaled symmetric indefinite
 //   saddle point of the unit tests, blocks 1e-8 and 1e4), contact (saddle with replaced rows).
 //
@@ -27,6 +29,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 
 #include "ModelMatrices.hpp"
@@ -88,7 +91,8 @@ int main(int argc, char* argv[])
   std::vector<std::string> problems = {"poisson2d", "poisson3d", "saddle", "contact"};
   std::vector<std::string> solvers = {"KLU2", "MUMPS"};
   bool equilibrate = true;
-  std::string ordering = "METIS";
+  std::string ordering;  // empty: the Linear Solver default
+  bool general = false;  // MUMPS LU (SYM = 0) also for the symmetric problems
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](const char* key) {
@@ -102,6 +106,12 @@ int main(int argc, char* argv[])
     else if (!value("--solvers").empty()) solvers = split(value("--solvers"));
     else if (!value("--ordering").empty()) ordering = value("--ordering");
     else if (a == "--no-equilibrate") equilibrate = false;
+    else if (a == "--general") general = true;
+    else if (a == "--print-parameters") {
+      if (root) sc::core::printParameterDocumentation(*LinearSolverFactory::getValidParameters(),
+                                                       std::cout);
+      return 0;
+    }
     else {
       if (root) std::cerr << "solvers_benchmark: unknown argument '" << a << "' (see the source "
                           << "header for the options)\n";
@@ -117,8 +127,9 @@ int main(int argc, char* argv[])
   };
 
   if (root) {
-    std::printf("# solvers_benchmark: %d rank(s), equilibration %s\n", comm->getSize(),
-                equilibrate ? "on" : "off");
+    std::printf("# solvers_benchmark: %d rank(s), equilibration %s, MUMPS ordering %s%s\n",
+                comm->getSize(), equilibrate ? "on" : "off",
+                ordering.empty() ? "default" : ordering.c_str(), general ? ", SYM = 0" : "");
     std::printf("%-10s %-6s %9s %10s %7s %8s %8s %7s %8s %10s %11s %9s %9s %9s %9s\n", "problem",
                 "solver", "DOFs", "nnz(A)", "equil_s", "symb_s", "num_s", "solve_s", "renum_s",
                 "DOFs/s", "nnz(LU)", "peakRSS", "MUMPS21", "MUMPS22", "residual");
@@ -143,9 +154,9 @@ int main(int argc, char* argv[])
         if (type == "KLU2" && p->dofs(n) > maxKluDofs) continue;
         Teuchos::ParameterList pl;
         pl.set("Type", type);
-        pl.set("Symmetric", type == "MUMPS" && p->symmetric());
+        pl.set("Symmetric", type == "MUMPS" && p->symmetric() && !general);
         pl.set("Equilibrate", equilibrate);
-        if (type == "MUMPS") pl.sublist("MUMPS").set("Ordering", ordering);
+        if (type == "MUMPS" && !ordering.empty()) pl.sublist("MUMPS").set("Ordering", ordering);
         try {
           auto solver = createDirectSolver(pl);
           solver->setOperator(A);

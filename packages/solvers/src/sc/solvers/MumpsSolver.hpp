@@ -18,7 +18,7 @@ namespace sc::solvers {
 struct MumpsOptions {
   int memoryRelaxationPercent = 30;  ///< ICNTL(14): extra workspace over the analysis estimate
   int workspaceRetries = 3;          ///< on INFOG(1) = -8/-9: retry with ICNTL(14) doubled
-  int ordering = 7;                  ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
+  int ordering = 2;                  ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
   bool verbose = false;              ///< MUMPS diagnostics on stdout (ICNTL(1..4))
 };
 
