@@ -8,6 +8,7 @@
 #include <sc/core/ProblemData.hpp>
 #include <sc/io/OutputSettings.hpp>
 #include <sc/mesh/MeshFactory.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
 
 #ifndef SC_SOURCE_INPUT_DIR
 #define SC_SOURCE_INPUT_DIR ""
@@ -39,7 +40,7 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
         "Rigid obstacle and friction law, for boundary parts of Type Contact (DESIGN §3).");
     add("Discretization", core::DiscretizationSettings::getValidParameters(),
         "Finite element spaces (DESIGN §2).");
-    add("Linear Solver", core::LinearSolverSettings::getValidParameters(),
+    add("Linear Solver", solvers::LinearSolverFactory::getValidParameters(),
         "Linear solver of each (Newton) step (DESIGN §6).");
     add("Estimator", core::EstimatorSettings::getValidParameters(),
         "Reconstruction-based a posteriori error estimator (DESIGN §4).");

@@ -4,7 +4,14 @@
 #include <numeric>
 #include <sstream>
 
+#include <Tpetra_MultiVector.hpp>
+
+#include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/core/Error.hpp>
+#include <sc/core/ExactSolution.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/solvers/DirectSolver.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
 #include <sc/io/OutputDirectory.hpp>
 #include <sc/io/RunSummary.hpp>
 #include <sc/io/XdmfWriter.hpp>
@@ -41,8 +48,16 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                   << " needs error indicators, and this build has no estimator yet (issue #6). "
                   << "Valid now: 'Uniform', or Cycles = 0.");
 
+  exact_ = core::createExactSolution(problem_.exactSolution, dim, material_);
+  for (const auto& bc : boundaryConditions_.conditions)
+    SC_THROW_IF(bc.fromExactSolution && !exact_, core::InputError,
+                "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution' needs "
+                    << "'Problem/Exact solution' (valid: 'Manufactured smooth', 'Linear patch'), "
+                    << "but it is 'None'.");
+  // Built here so that a bad Linear Solver list fails before any work.
+  solver_ = solvers::createDirectSolver(params_->sublist("Linear Solver"));
+
   // What this build cannot compute yet, stated rather than faked.
-  phasesMissing_ = {"mixed elasticity solve (issue #4)"};
   if (boundaryConditions_.hasContact())
     phasesMissing_.push_back(std::string("contact") +
                              (contact_.needsFriction() ? " with friction" : "") + " (issue #5)");
@@ -77,6 +92,39 @@ void Simulation::partitionMesh()
   elementOwner_ = mesh::partitionElements(*mesh_, *comm_);
 }
 
+void Simulation::solveElasticity()
+{
+  {
+    auto t = timers_.scope("setup");
+    space_ = Teuchos::rcp(new disc::MixedElasticitySpace(mesh_, discretization_.degree,
+                                                         elementOwner_, comm_->getRank()));
+    assembler_ = std::make_unique<assembly::MixedElasticityAssembler>(space_, comm_);
+  }
+  progress_.report("setup", std::to_string(space_->numGlobalDofs()) + " DOFs (stress " +
+                                std::to_string(space_->numStressDofs()) + ", displacement " +
+                                std::to_string(space_->numDisplacementDofs()) + ", rotation " +
+                                std::to_string(space_->numRotationDofs()) + ")");
+  {
+    auto t = timers_.scope("assemble");
+    assembler_->assemble({material_, boundaryConditions_, exact_.get()});
+  }
+  progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
+  {
+    auto t = timers_.scope("solve");
+    // Without contact rows the system is symmetric (tractions are eliminated symmetrically).
+    solver_->setSymmetric(true);
+    solver_->setOperator(assembler_->matrix());
+    solver_->symbolicFactorization();
+    solver_->numericFactorization();
+    solution_ = assembler_->createVector();
+    solver_->solve(*assembler_->rhs(), *solution_);
+  }
+  std::ostringstream os;
+  os << solver_->name() << ", relative residual " << solver_->lastSolveStats().relativeResidual;
+  progress_.report("solve", os.str());
+  solved_ = true;
+}
+
 void Simulation::checkScene()
 {
   setupMesh();
@@ -86,6 +134,32 @@ void Simulation::recordCycle(int cycle)
 {
   nlohmann::ordered_json& c = summary_->addCycle(cycle);
   c["elements"] = mesh_->numElements();
+  if (solved_) {
+    c["dofs"] = {{"stress", space_->numStressDofs()},
+                 {"displacement", space_->numDisplacementDofs()},
+                 {"rotation", space_->numRotationDofs()},
+                 {"total", space_->numGlobalDofs()}};
+    const auto& st = solver_->lastSolveStats();
+    c["linear_iterations"] = 1;  // direct solve
+    c["linear_solver"] = {{"type", solver_->name()},
+                          {"relative_residual", st.relativeResidual},
+                          {"symbolic_reuses", st.symbolicReuses},
+                          {"factor_nonzeros", st.factorNonzeros}};
+    if (exact_) {
+      auto t = timers_.scope("errors");
+      const auto e = assembly::computeErrors(*assembler_, *solution_, *exact_, *comm_);
+      c["errors"] = {{"stress_l2", e.stress},
+                     {"stress_div_l2", e.stressDiv},
+                     {"displacement_l2", e.displacement},
+                     {"rotation_l2", e.rotation},
+                     {"stress_l2_relative", e.stress / e.stressNorm},
+                     {"displacement_l2_relative", e.displacement / e.displacementNorm}};
+      std::ostringstream os;
+      os << "|σ−σh| = " << e.stress << ", |div(σ−σh)| = " << e.stressDiv << ", |u−uh| = "
+         << e.displacement << ", |θ−θh| = " << e.rotation;
+      progress_.report("errors", os.str());
+    }
+  }
   c["mesh"] = {{"vertices", mesh_->numVertices()},
                {"elements", mesh_->numElements()},
                {"measure", mesh_->measure()},
@@ -144,6 +218,16 @@ void Simulation::writeFields(int cycle)
     measure.push_back(mesh_->elementMeasure(static_cast<int>(e)));
   }
   domain.addCellField("element_measure", io::FieldKind::Scalar, std::move(measure));
+  if (solved_) {
+    // Cell averages, in the order of the rank's owned elements (the loop above).
+    auto avg = assembly::computeCellAverages(*assembler_, *solution_);
+    domain.addCellField("stress", io::FieldKind::Tensor, std::move(avg.stress));
+    domain.addCellField("von_mises", io::FieldKind::Scalar, std::move(avg.vonMises));
+    domain.addCellField("pressure", io::FieldKind::Scalar, std::move(avg.pressure));
+    domain.addCellField("displacement", io::FieldKind::Vector, std::move(avg.displacement));
+    domain.addCellField("rotation", dim == 2 ? io::FieldKind::Scalar : io::FieldKind::Vector,
+                        std::move(avg.rotation));
+  }
 
   io::GridPiece boundary("boundary", dim == 2 ? io::CellType::Line : io::CellType::Triangle, dim);
   boundary.geometryFrom = "domain";
@@ -190,14 +274,16 @@ void Simulation::run()
       if (cycle > 0)
         refineMesh();
       partitionMesh();
+      if (!boundaryConditions_.hasContact())
+        solveElasticity();
       writeFields(cycle);
       recordCycle(cycle);
       summary_->currentCycle()["timings"] = timers_.cycleTimings();
       timers_.nextCycle();
       summary_->write();
     }
-    // Nothing was solved while the solver packages are missing: the run is not "converged".
-    summary_->setConverged(phasesMissing_.empty());
+    // A scene whose contact could not be solved (issue #5) is not "converged".
+    summary_->setConverged(solved_);
     summary_->write();
     progress_.message("done: " + output_.directory + "/summary.json");
   } catch (const std::exception& e) {

@@ -13,6 +13,7 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
+#include <Tpetra_MultiVector_fwd.hpp>
 
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
@@ -27,6 +28,18 @@ namespace sc::io {
 class RunSummary;
 class XdmfWriter;
 }  // namespace sc::io
+namespace sc::disc {
+class MixedElasticitySpace;
+}
+namespace sc::assembly {
+class MixedElasticityAssembler;
+}
+namespace sc::solvers {
+class DirectSolver;
+}
+namespace sc::core {
+class ExactSolution;
+}
 
 namespace sc::app {
 
@@ -50,6 +63,7 @@ private:
   void setupMesh();
   void refineMesh();
   void partitionMesh();
+  void solveElasticity();
   void writeFields(int cycle);
   void recordCycle(int cycle);
 
@@ -73,6 +87,14 @@ private:
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
   std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element
   std::vector<std::string> phasesMissing_;
+
+  // Mixed elasticity (no contact boundary): spaces, system, solver, solution of the cycle.
+  std::unique_ptr<core::ExactSolution> exact_;
+  Teuchos::RCP<disc::MixedElasticitySpace> space_;
+  std::unique_ptr<assembly::MixedElasticityAssembler> assembler_;
+  Teuchos::RCP<solvers::DirectSolver> solver_;
+  Teuchos::RCP<Tpetra::MultiVector<>> solution_;
+  bool solved_ = false;
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<io::XdmfWriter> writer_;

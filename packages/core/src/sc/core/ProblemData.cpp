@@ -252,25 +252,6 @@ DiscretizationSettings DiscretizationSettings::fromParameters(const Teuchos::Par
   return s;
 }
 
-Teuchos::RCP<const Teuchos::ParameterList> LinearSolverSettings::getValidParameters()
-{
-  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
-    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
-    declareChoice(*pl, "Type", "KLU2", {"KLU2", "MUMPS"},
-                  "Direct solver for the saddle-point system: KLU2 (Amesos2, serial) or MUMPS "
-                  "(parallel LDLᵀ), DESIGN §6.");
-    return pl;
-  }();
-  return valid;
-}
-
-LinearSolverSettings LinearSolverSettings::fromParameters(const Teuchos::ParameterList& pl)
-{
-  LinearSolverSettings s;
-  s.type = pl.get<std::string>("Type");
-  return s;
-}
-
 Teuchos::RCP<const Teuchos::ParameterList> EstimatorSettings::getValidParameters()
 {
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {

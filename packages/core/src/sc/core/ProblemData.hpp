@@ -4,8 +4,8 @@
 // (degree, linear solver, estimator, adaptivity). Each struct owns one sublist of the deck and
 // describes it in getValidParameters(); fromParameters() reads a validated list.
 //
-// The method settings live here until their packages exist (discretization #4, solvers #4/#7,
-// estimator #6, adapt #6); each moves to its package then, keeping its keys.
+// The method settings live here until their packages own them (estimator #6, adapt #6); the
+// "Linear Solver" sublist belongs to sc::solvers::LinearSolverFactory.
 
 #include <string>
 #include <vector>
@@ -94,12 +94,6 @@ struct DiscretizationSettings {
   int degree = 1;  ///< k of RT_k × DP_k × CP_k (DESIGN §2)
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static DiscretizationSettings fromParameters(const Teuchos::ParameterList& list);
-};
-
-struct LinearSolverSettings {
-  std::string type = "KLU2";
-  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static LinearSolverSettings fromParameters(const Teuchos::ParameterList& list);
 };
 
 struct EstimatorSettings {
