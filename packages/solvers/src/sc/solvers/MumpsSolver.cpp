@@ -2,6 +2,7 @@
 
 #include <sc/solvers/MumpsSolver.hpp>
 
+#include <algorithm>
 #include <climits>
 #include <sstream>
 #include <vector>
