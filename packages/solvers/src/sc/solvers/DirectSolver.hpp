@@ -47,11 +47,13 @@ public:
   void setSymmetric(bool symmetric);
   bool isSymmetric() const { return symmetric_; }
 
-  /// Symmetric-where-possible diagonal scaling D_r A D_c before factorising (on by default).
+  /// Ruiz diagonal scaling D_r A D_c before factorising (on by default; D_r = D_c when symmetric).
   void setEquilibration(bool equilibrate);
   bool equilibrationEnabled() const { return equilibrate_; }
 
-  /// Ordering and symbolic analysis of the current operator's graph (always redone).
+  /// Ordering and symbolic analysis of the current operator's graph, always redone. Not needed in
+  /// a Newton loop: numericFactorization() and solve() analyse only when the graph changed, and
+  /// calling this every step throws the reuse away (DESIGN §6).
   void symbolicFactorization();
   /// Numerical factorisation; reuses the symbolic factorisation if it is still valid (same graph),
   /// otherwise analyses first.
