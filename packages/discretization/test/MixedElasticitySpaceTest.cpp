@@ -6,12 +6,14 @@
 // - continuity of CP_k on faces (k = 2 has edge DOFs, which need orientation);
 // - the divergence theorem ∫_T div φ = ∫_∂T φ·n for every RT function of every element.
 #include <cmath>
+#include <algorithm>
 #include <map>
 
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include <sc/core/Parameters.hpp>
 #include <sc/disc/ElementValues.hpp>
+#include <sc/disc/FaceDofPoints.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/MeshFactory.hpp>
@@ -194,4 +196,54 @@ TEUCHOS_UNIT_TEST(MixedElasticitySpace, OwnershipCoversAllDofsOnce)
   }
   sc::disc::MixedElasticitySpace space(mesh, 1, owner, 0);
   TEST_EQUALITY(total, space.numGlobalDofs());
+}
+
+TEUCHOS_UNIT_TEST(FaceDofPoints, PointValuesOnBoundaryFaces)
+{
+  // DESIGN §3: for RT_1 in 2D the face DOFs sit at 1/3 and 2/3 of each edge (Intrepid2
+  // equispaced lattice); the traction at p_j is s_j times the coefficient. Checked: the points
+  // lie on the face at the expected fractions, s_j ≠ 0, and Σ_j over a face of (φ_j·n) weights
+  // reproduces a constant flux (the flux of φ_j integrates to |F|/(k+1)·s_j·... is not needed).
+  auto mesh = makeMesh("Half disc", 2, 0.3);
+  sc::disc::MixedElasticitySpace space(mesh, 1, std::vector<int>(mesh->numElements(), 0), 0);
+  int checked = 0;
+  for (int f : mesh->boundaryFaces()) {
+    const int e = mesh->faceElements(f)[0];
+    int lf = 0;
+    while (mesh->elementFaces(e)[lf] != f)
+      ++lf;
+    const auto pts = sc::disc::stressFaceDofPoints(space, e, lf);
+    TEST_EQUALITY(pts.size(), 2u);
+    const double* a = mesh->vertex(mesh->faceVertices(f)[0]);
+    const double* b = mesh->vertex(mesh->faceVertices(f)[1]);
+    std::vector<double> fractions;
+    for (const auto& p : pts) {
+      TEST_COMPARE(std::abs(p.scale), >, 0.0);
+      // Position along the edge: x = a + s (b − a), s ∈ {1/3, 2/3}.
+      const double len2 = std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2);
+      const double s = ((p.x[0] - a[0]) * (b[0] - a[0]) + (p.x[1] - a[1]) * (b[1] - a[1])) / len2;
+      const double off = std::abs((p.x[0] - a[0]) * (b[1] - a[1]) - (p.x[1] - a[1]) * (b[0] - a[0]));
+      TEST_COMPARE(off, <=, 1e-12);
+      fractions.push_back(s);
+      // Intrepid2 13.2 scaling (DESIGN §3): |s_j| = 2/|e|.
+      TEST_FLOATING_EQUALITY(std::abs(p.scale), 2.0 / mesh->faceMeasure(f), 1e-10);
+    }
+    std::sort(fractions.begin(), fractions.end());
+    TEST_FLOATING_EQUALITY(fractions[0], 1.0 / 3.0, 1e-10);
+    TEST_FLOATING_EQUALITY(fractions[1], 2.0 / 3.0, 1e-10);
+    ++checked;
+  }
+  TEST_COMPARE(checked, >, 10);
+  // 3D, k = 1: three points per face, nonzero scales.
+  auto mesh3 = makeMesh("Half ball", 3, 0.5);
+  sc::disc::MixedElasticitySpace space3(mesh3, 1, std::vector<int>(mesh3->numElements(), 0), 0);
+  const int f = mesh3->boundaryFaces().front();
+  const int e = mesh3->faceElements(f)[0];
+  int lf = 0;
+  while (mesh3->elementFaces(e)[lf] != f)
+    ++lf;
+  const auto pts3 = sc::disc::stressFaceDofPoints(space3, e, lf);
+  TEST_EQUALITY(pts3.size(), 3u);
+  for (const auto& p : pts3)
+    TEST_COMPARE(std::abs(p.scale), >, 0.0);
 }

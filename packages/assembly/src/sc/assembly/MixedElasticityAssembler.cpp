@@ -150,9 +150,6 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
     SC_THROW_IF(bc.fromExactSolution && !exact, core::InputError,
                 "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution', but "
                     << "'Problem/Exact solution' is 'None'.");
-    SC_THROW_IF(bc.type == core::BoundaryType::Contact, core::InternalError,
-                "the elasticity assembler got a Contact boundary ('" << bc.boundary
-                    << "'); contact rows belong to the contact package");
   }
 
   disc::ElementValues ev(S, 2 * k + 2);
@@ -245,6 +242,10 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       const core::BoundaryType type = bc ? bc->type : core::BoundaryType::Free;
       const auto& faceDofs = S.stressFaceLocalDofs(lf);
       const int nF = static_cast<int>(faceDofs.size());
+      // Contact: no term here. ⟨ũ, τn⟩_ΓC is the residual of these rows, which the contact
+      // package (ActiveSetSolver) turns into the contact conditions (DESIGN §3).
+      if (type == core::BoundaryType::Contact)
+        continue;
       if (type == core::BoundaryType::Displacement) {
         fv.reinit(e, lf);
         for (int q = 0; q < fv.numPoints(); ++q) {

@@ -1,0 +1,383 @@
+#include "sc/contact/ActiveSetSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
+#include <sc/disc/ElementValues.hpp>
+#include <sc/disc/FaceDofPoints.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+#include <sc/solvers/DirectSolver.hpp>
+
+#include "sc/contact/Obstacle.hpp"
+
+namespace sc::contact {
+
+std::string toString(PointStatus s)
+{
+  switch (s) {
+  case PointStatus::Free: return "free";
+  case PointStatus::Stick: return "stick";
+  case PointStatus::Slip: return "slip";
+  }
+  return "?";
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Newton"));
+    core::declareInt(*pl, "Maximum iterations", 50,
+                     "Semismooth Newton (active-set) steps before giving up with an error.", 1, 10000);
+    core::declareReal(*pl, "Penalty factor", 1.0,
+                      "Factor on c = 2μ/(h_F |F|) (DESIGN §3). The solution does not depend on c; "
+                      "a very large c can make Coulomb cycle.",
+                      0.0, true, core::kInfinity, false);
+    core::declareInt(*pl, "Maximum remedies", 5,
+                     "Cycle remedies (points whose slip direction flipped move to stick) before "
+                     "the solver stops with an error.",
+                     0, 1000);
+    return pl;
+  }();
+  return valid;
+}
+
+ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
+                                 const core::ContactSettings& settings,
+                                 const core::Material& material,
+                                 const std::vector<std::string>& contactBoundaries,
+                                 const Teuchos::ParameterList& newtonList,
+                                 Teuchos::RCP<const Teuchos::Comm<int>> comm)
+  : space_(space), settings_(settings), comm_(std::move(comm)),
+    obstacle_(createObstacle(settings, space.dim()))
+{
+  Teuchos::ParameterList nl = newtonList;
+  core::validateParameters(nl, *getValidParameters(), "Contact/Newton");
+  maxIterations_ = nl.get<int>("Maximum iterations");
+  maxRemedies_ = nl.get<int>("Maximum remedies");
+  penaltyFactor_ = nl.get<double>("Penalty factor");
+
+  const auto& m = space.mesh();
+  const int d = m.dim();
+  // Gap cap for rays that miss the obstacle: 10 × the domain's bounding-box diagonal.
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (int v = 0; v < m.numVertices(); ++v)
+    for (int i = 0; i < d; ++i) {
+      lo[i] = std::min(lo[i], m.vertex(v)[i]);
+      hi[i] = std::max(hi[i], m.vertex(v)[i]);
+    }
+  double diag = 0.0;
+  for (int i = 0; i < d; ++i)
+    diag += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  const double cap = 10.0 * std::sqrt(diag);
+  const double twoMu = 2.0 * material.shearModulus();
+
+  std::vector<int> contactIds;
+  for (const auto& name : contactBoundaries)
+    contactIds.push_back(m.boundaryId(name));
+  disc::FaceValues fv(space, 2 * space.degree() + 2);
+  for (int e : space.ownedElements()) {
+    for (int lf = 0; lf <= d; ++lf) {
+      const int f = m.elementFaces(e)[lf];
+      if (!m.isBoundaryFace(f) ||
+          std::find(contactIds.begin(), contactIds.end(), m.faceBoundaryId(f)) == contactIds.end())
+        continue;
+      const auto dofPoints = disc::stressFaceDofPoints(space, e, lf);
+      fv.reinit(e, lf);
+      const auto& n = fv.normal();
+      std::array<double, 3> t1{}, t2{};
+      if (d == 2) {
+        t1 = {-n[1], n[0], 0.0};
+      } else {
+        // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
+        int axis = 0;
+        for (int i = 1; i < 3; ++i)
+          if (std::abs(n[i]) < std::abs(n[axis]))
+            axis = i;
+        std::array<double, 3> a{0, 0, 0};
+        a[axis] = 1.0;
+        const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+        double norm = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          t1[i] = a[i] - an * n[i];
+          norm += t1[i] * t1[i];
+        }
+        for (double& c : t1)
+          c /= std::sqrt(norm);
+        t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
+      }
+      const double area = m.faceMeasure(f);
+      const double hF = d == 2 ? area : std::sqrt(area);
+      for (const auto& dp : dofPoints) {
+        ContactPoint p;
+        for (int i = 0; i < d; ++i)
+          p.gids[i] = space.elementDofs(e)[space.stressOffset(i) + dp.localDof];
+        p.x = dp.x;
+        p.n = n;
+        p.t1 = t1;
+        p.t2 = t2;
+        p.scale = dp.scale;
+        p.c = penaltyFactor_ * twoMu / (hF * area);
+        for (int q = 0; q < fv.numPoints(); ++q) {
+          const double psi = fv.stressNormal(dp.localDof, q) / dp.scale;  // ψ_p·n
+          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), n.data(), cap) * psi;
+          p.weight += fv.weight(q) * psi;
+        }
+        points_.push_back(p);
+      }
+    }
+  }
+}
+
+ActiveSetSolver::~ActiveSetSolver() = default;
+
+bool ActiveSetSolver::hasFriction() const { return settings_.needsFriction(); }
+
+long long ActiveSetSolver::globalNumPoints() const
+{
+  long long local = static_cast<long long>(points_.size()), global = 0;
+  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &local, &global);
+  return global;
+}
+
+void ActiveSetSolver::setInitialState(const std::vector<ContactPoint>& previous)
+{
+  if (previous.empty())
+    return;
+  const int d = space_.dim();
+  for (auto& p : points_) {
+    double best = 1e300;
+    for (const auto& q : previous) {
+      double dist = 0.0;
+      for (int i = 0; i < d; ++i)
+        dist += (p.x[i] - q.x[i]) * (p.x[i] - q.x[i]);
+      if (dist < best) {
+        best = dist;
+        p.status = q.status;
+        p.direction = q.direction;
+      }
+    }
+  }
+}
+
+void ActiveSetSolver::evaluate(const CrsMatrix& K, const MultiVector& b, const MultiVector& x)
+{
+  const int d = space_.dim();
+  MultiVector R(K.getRangeMap(), 1);
+  K.apply(x, R);
+  R.update(-1.0, b, 1.0);  // R = K x − b: the first block row's residual = ⟨ũ, τn⟩_ΓC
+  auto xv = x.getData(0);
+  auto rv = R.getData(0);
+  const auto& map = *x.getMap();
+  for (auto& p : points_) {
+    double t[3] = {0, 0, 0}, r[3] = {0, 0, 0};
+    for (int i = 0; i < d; ++i) {
+      const auto lid = map.getLocalElement(p.gids[i]);
+      t[i] = p.scale * xv[lid];
+      r[i] = rv[lid] / p.scale;
+    }
+    auto dot = [&](const double* a, const std::array<double, 3>& v) {
+      return a[0] * v[0] + a[1] * v[1] + a[2] * v[2];
+    };
+    p.sigmaN = dot(t, p.n);
+    p.rN = dot(r, p.n);
+    p.sigmaT = {dot(t, p.t1), d == 3 ? dot(t, p.t2) : 0.0};
+    p.rT = {dot(r, p.t1), d == 3 ? dot(r, p.t2) : 0.0};
+  }
+}
+
+int ActiveSetSolver::updateState(bool flipToStick)
+{
+  const int nt = space_.dim() - 1;
+  const bool friction = settings_.needsFriction();
+  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca;
+  const double mu = settings_.frictionCoefficient;
+  int changes = 0;
+  for (auto& p : points_) {
+    const double aug = p.sigmaN - p.c * (p.rN - p.gap);
+    PointStatus status = PointStatus::Free;
+    std::array<double, 2> xi{0.0, 0.0};
+    if (aug < 0.0) {
+      if (!friction) {
+        status = PointStatus::Slip;  // frictionless contact: σ_T = 0, free sliding
+      } else {
+        // Hüeber–Stadler–Wohlmuth bound: the augmented normal stress, not the old σ_N (which
+        // is 0 for a newly active point).
+        const double bound = tresca ? settings_.trescaBound : mu * std::max(0.0, -aug);
+        double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]}, norm = 0.0;
+        for (int k = 0; k < nt; ++k)
+          norm += z[k] * z[k];
+        norm = std::sqrt(norm);
+        if (norm <= bound || norm == 0.0) {
+          status = PointStatus::Stick;
+        } else {
+          status = PointStatus::Slip;
+          for (int k = 0; k < nt; ++k)
+            xi[k] = z[k] / norm;
+        }
+      }
+    }
+    bool flipped = false;
+    if (status == PointStatus::Slip && p.status == PointStatus::Slip && friction)
+      flipped = xi[0] * p.direction[0] + xi[1] * p.direction[1] < 0.0;
+    if (flipped && flipToStick) {
+      status = PointStatus::Stick;
+      xi = {0.0, 0.0};
+    }
+    double dxi = std::abs(xi[0] - p.direction[0]) + std::abs(xi[1] - p.direction[1]);
+    if (status != p.status || (status == PointStatus::Slip && dxi > 1e-9))
+      ++changes;
+    p.status = status;
+    p.direction = xi;
+  }
+  int global = 0;
+  Teuchos::reduceAll<int, int>(*comm_, Teuchos::REDUCE_SUM, 1, &changes, &global);
+  return global;
+}
+
+Teuchos::RCP<ActiveSetSolver::CrsMatrix>
+ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b) const
+{
+  const int d = space_.dim();
+  const bool friction = settings_.needsFriction();
+  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca;
+  const double mu = settings_.frictionCoefficient;
+  auto A = Teuchos::rcp(new CrsMatrix(K, Teuchos::Copy));
+  A->resumeFill();
+  rhs.assign(b);
+  auto rhsData = rhs.getDataNonConst(0);
+  auto bData = b.getData(0);
+  const auto& rowMap = *K.getRowMap();
+  const auto& colMap = *K.getColMap();
+  using LO = CrsMatrix::local_ordinal_type;
+  for (const auto& p : points_) {
+    LO lid[3];
+    std::vector<std::vector<LO>> cols(d);
+    std::vector<std::vector<double>> vals(d);
+    for (int i = 0; i < d; ++i) {
+      lid[i] = rowMap.getLocalElement(p.gids[i]);
+      CrsMatrix::local_inds_host_view_type inds;
+      CrsMatrix::values_host_view_type v;
+      K.getLocalRowView(lid[i], inds, v);
+      cols[i].assign(inds.data(), inds.data() + inds.extent(0));
+      vals[i].assign(v.data(), v.data() + v.extent(0));
+    }
+    auto entry = [&](int row, LO col) {
+      for (std::size_t k = 0; k < cols[row].size(); ++k)
+        if (cols[row][k] == col)
+          return vals[row][k];
+      return 0.0;
+    };
+    // Frame vectors per equation: row 0 normal, rows 1.. tangential.
+    const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
+    for (int r = 0; r < d; ++r) {
+      const auto& dir = *frame[r];
+      std::vector<double> newVals(cols[r].size(), 0.0);
+      double newRhs = 0.0;
+      enum { KeepRow, Traction } kind = Traction;
+      std::array<double, 3> coeff{0, 0, 0};  // traction row: Σ_i coeff_i x_{g_i} = newRhs
+      if (r == 0) {
+        if (p.status == PointStatus::Free) {
+          for (int i = 0; i < d; ++i)
+            coeff[i] = p.scale * dir[i];  // σ_N = 0
+        } else {
+          kind = KeepRow;  // r_N = G
+          newRhs = p.scale * p.gap;
+        }
+      } else {
+        const int k = r - 1;
+        if (p.status == PointStatus::Stick) {
+          kind = KeepRow;  // r_T = 0
+        } else if (p.status == PointStatus::Slip && friction) {
+          if (tresca) {
+            for (int i = 0; i < d; ++i)
+              coeff[i] = p.scale * dir[i];  // σ_T,k = s ξ_k
+            newRhs = settings_.trescaBound * p.direction[k];
+          } else {
+            for (int i = 0; i < d; ++i)
+              coeff[i] = p.scale * (dir[i] + mu * p.direction[k] * p.n[i]);  // σ_T,k + μ ξ_k σ_N = 0
+          }
+        } else {
+          for (int i = 0; i < d; ++i)
+            coeff[i] = p.scale * dir[i];  // σ_T = 0 (free or frictionless)
+        }
+      }
+      if (kind == KeepRow) {
+        for (std::size_t c = 0; c < cols[r].size(); ++c)
+          for (int i = 0; i < d; ++i)
+            newVals[c] += dir[i] * entry(i, cols[r][c]);
+        for (int i = 0; i < d; ++i)
+          newRhs += dir[i] * bData[lid[i]];
+      } else {
+        for (std::size_t c = 0; c < cols[r].size(); ++c)
+          for (int i = 0; i < d; ++i)
+            if (cols[r][c] == colMap.getLocalElement(p.gids[i]))
+              newVals[c] += coeff[i];
+      }
+      A->replaceLocalValues(lid[r], Teuchos::ArrayView<const LO>(cols[r]),
+                            Teuchos::ArrayView<const double>(newVals));
+      rhsData[lid[r]] = newRhs;
+    }
+  }
+  A->fillComplete(K.getDomainMap(), K.getRangeMap());
+  return A;
+}
+
+void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
+                            solvers::DirectSolver& solver, MultiVector& x)
+{
+  stats_ = ContactStatistics();
+  MultiVector rhs(b.getMap(), 1);
+  std::vector<std::vector<int>> history;  // local state signature per iteration
+  auto signature = [&]() {
+    std::vector<int> s;
+    for (const auto& p : points_)
+      s.push_back(static_cast<int>(p.status) * 4 + (p.direction[0] > 0) * 2 + (p.direction[1] > 0));
+    return s;
+  };
+  history.push_back(signature());
+  // Contact rows make the system non-symmetric.
+  solver.setSymmetric(false);
+  for (int it = 1; it <= maxIterations_; ++it) {
+    auto A = modifiedMatrix(K, rhs, b);
+    // Same graph every step: the solver keeps its symbolic analysis and refactorises.
+    solver.setOperator(A);
+    solver.solve(rhs, x);
+    stats_.newtonIterations = it;
+    evaluate(K, b, x);
+    const int changes = updateState(false);
+    stats_.changesPerIteration.push_back(changes);
+    if (changes == 0) {
+      stats_.converged = true;
+      return;
+    }
+    // A state seen before (on every rank) is a cycle.
+    const auto sig = signature();
+    int seenLocal = 0;
+    for (std::size_t k = 0; k + 1 < history.size() && !seenLocal; ++k)
+      seenLocal = history[k] == sig;
+    int seenAll = 0;
+    Teuchos::reduceAll<int, int>(*comm_, Teuchos::REDUCE_MIN, 1, &seenLocal, &seenAll);
+    history.push_back(sig);
+    if (seenAll) {
+      SC_THROW_IF(stats_.remedies >= maxRemedies_, core::ConvergenceError,
+                  "the contact active set cycles (a state repeated after " << it
+                      << " Newton steps) and " << stats_.remedies
+                      << " remedies did not help; try a smaller 'Contact/Newton/Penalty factor'.");
+      ++stats_.remedies;
+      updateState(true);  // points whose slip direction flipped go to the stick set
+    }
+  }
+  SC_THROW_IF(true, core::ConvergenceError,
+              "the contact active set did not settle in " << maxIterations_
+                  << " Newton steps ('Contact/Newton/Maximum iterations'); the last step changed "
+                  << stats_.changesPerIteration.back() << " points.");
+}
+
+}  // namespace sc::contact

@@ -1,0 +1,113 @@
+#pragma once
+// Frictional contact on the stress DOFs (DESIGN §3): semismooth Newton / primal–dual active set.
+//
+// Contact points are the lattice points of the RT face DOFs on Γ_C faces. At a point p with
+// unscaled traction t = s_p (c_0, .., c_{d−1}) (c_i: the coefficient of row i's DOF, s_p from
+// disc::stressFaceDofPoints) and weighted displacement trace r = R/s_p (R: residual of the first
+// block row without contact term), in the face frame (n, t_1[, t_2]):
+//   A (contact):  σ_N − c(r_N − G) < 0 → normal row kept with r_N = G (G on the right-hand side)
+//   I (free):     σ_N = 0, σ_T = 0 (rows replaced)
+//   on A, with s = μ_F max(0, −(σ_N − c(r_N − G))) (Hüeber–Stadler–Wohlmuth):
+//     stick if |σ_T − c r_T| ≤ s → tangential rows kept with r_T = 0;
+//     slip → σ_T = −μ_F σ_N ξ, ξ = (σ_T − c r_T)/|σ_T − c r_T|: exact Newton row in 2D; in 3D the
+//            direction is frozen at the previous iterate (a fixed point in ξ).
+//     frictionless: σ_T = 0.  Tresca: s given.
+// The state (sets, directions) is iterated until it does not change; a state seen before is a
+// cycle: points whose direction flipped move to the stick set (a bounded number of times), then
+// the solver stops with a ConvergenceError. Rows replaced keep the matrix graph, so the direct
+// solver's symbolic factorisation is reused across Newton steps.
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+#include <Tpetra_CrsMatrix_fwd.hpp>
+#include <Tpetra_MultiVector_fwd.hpp>
+
+#include <sc/core/ProblemData.hpp>
+
+namespace sc::disc {
+class MixedElasticitySpace;
+}
+namespace sc::solvers {
+class DirectSolver;
+}
+
+namespace sc::contact {
+
+class Obstacle;
+
+enum class PointStatus { Free = 0, Stick = 1, Slip = 2 };
+std::string toString(PointStatus s);
+
+struct ContactPoint {
+  std::array<long long, 3> gids{};  ///< the d row DOFs at this point
+  std::array<double, 3> x{};
+  std::array<double, 3> n{}, t1{}, t2{};
+  double scale = 0.0;    ///< s_p: traction = scale × coefficient
+  double gap = 0.0;      ///< weighted gap G_p = ∫_F g ψ_p·n ds
+  double weight = 0.0;   ///< ∫_F ψ_p·n ds (for the resultant force)
+  double c = 0.0;        ///< semismooth Newton constant 2μ/(h_F |F|)
+  // State and results.
+  PointStatus status = PointStatus::Free;
+  std::array<double, 2> direction{};  ///< slip direction ξ in (t1, t2)
+  double sigmaN = 0.0, rN = 0.0;
+  std::array<double, 2> sigmaT{}, rT{};
+};
+
+struct ContactStatistics {
+  int newtonIterations = 0;
+  int remedies = 0;
+  bool converged = false;
+  std::vector<int> changesPerIteration;
+};
+
+class ActiveSetSolver {
+public:
+  using CrsMatrix = Tpetra::CrsMatrix<>;
+  using MultiVector = Tpetra::MultiVector<>;
+
+  /// Valid "Contact/Newton" keys (sublist of Contact): Maximum iterations, Penalty factor,
+  /// Maximum remedies.
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+
+  /// Points on the faces of `contactBoundaries` owned by this rank.
+  ActiveSetSolver(const disc::MixedElasticitySpace& space, const core::ContactSettings& settings,
+                  const core::Material& material, const std::vector<std::string>& contactBoundaries,
+                  const Teuchos::ParameterList& newtonList, Teuchos::RCP<const Teuchos::Comm<int>> comm);
+  ~ActiveSetSolver();
+
+  /// Start from the states of points of a previous cycle (nearest point), else all free.
+  void setInitialState(const std::vector<ContactPoint>& previous);
+
+  /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact
+  /// terms; x: initial guess in, solution out. Throws ConvergenceError if the state does not
+  /// settle within the limits (statistics() then says converged = false).
+  void solve(const CrsMatrix& K, const MultiVector& b, solvers::DirectSolver& solver,
+             MultiVector& x);
+
+  const std::vector<ContactPoint>& points() const { return points_; }
+  const ContactStatistics& statistics() const { return stats_; }
+  long long globalNumPoints() const;
+  bool hasFriction() const;
+
+private:
+  void evaluate(const CrsMatrix& K, const MultiVector& b, const MultiVector& x);
+  int updateState(bool allowFlipRemedy);
+  Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs,
+                                         const MultiVector& b) const;
+
+  const disc::MixedElasticitySpace& space_;
+  core::ContactSettings settings_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  std::unique_ptr<Obstacle> obstacle_;
+  std::vector<ContactPoint> points_;
+  int maxIterations_, maxRemedies_;
+  double penaltyFactor_;
+  ContactStatistics stats_;
+};
+
+}  // namespace sc::contact

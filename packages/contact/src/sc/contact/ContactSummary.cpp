@@ -1,0 +1,123 @@
+#include "sc/contact/ContactSummary.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+
+namespace sc::contact {
+namespace {
+
+// Half-width / radius of the set `in` among all points: midpoint between the outermost point
+// inside and the nearest point outside beyond it (on each side in 2D).
+double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool signedCoordinate)
+{
+  double maxIn = -1e300, minIn = 1e300;
+  bool any = false;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (in[i]) {
+      any = true;
+      maxIn = std::max(maxIn, s[i]);
+      minIn = std::min(minIn, s[i]);
+    }
+  if (!any)
+    return 0.0;
+  double nextOut = 1e300, prevOut = -1e300;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!in[i]) {
+      if (s[i] > maxIn)
+        nextOut = std::min(nextOut, s[i]);
+      if (s[i] < minIn)
+        prevOut = std::max(prevOut, s[i]);
+    }
+  const double right = nextOut < 1e299 ? 0.5 * (maxIn + nextOut) : maxIn;
+  if (!signedCoordinate)
+    return right;
+  const double left = prevOut > -1e299 ? 0.5 * (minIn + prevOut) : minIn;
+  return 0.5 * (right - left);
+}
+
+}  // namespace
+
+ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
+                                const std::vector<double>& obstacleNormal,
+                                const Teuchos::Comm<int>& comm)
+{
+  ContactSummary out;
+  // Local contributions: force, pressure, counts, centroid of active points.
+  double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // force(3), active count, centroid(3), ...
+  double localMax = 0.0;
+  long long counts[3] = {0, 0, 0};
+  for (const auto& p : points) {
+    for (int i = 0; i < dim; ++i) {
+      const double ti = p.sigmaN * p.n[i] + p.sigmaT[0] * p.t1[i] + p.sigmaT[1] * p.t2[i];
+      local[i] += ti * p.weight;
+    }
+    localMax = std::max(localMax, -p.sigmaN);
+    ++counts[static_cast<int>(p.status)];
+    if (p.status != PointStatus::Free) {
+      local[3] += 1.0;
+      for (int i = 0; i < dim; ++i)
+        local[4 + i] += p.x[i];
+    }
+  }
+  double global[9];
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 9, local, global);
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, 1, &localMax, &out.maxPressure);
+  long long gcounts[3];
+  Teuchos::reduceAll<int, long long>(comm, Teuchos::REDUCE_SUM, 3, counts, gcounts);
+  for (int i = 0; i < dim; ++i) {
+    out.force[i] = global[i];
+    out.center[i] = global[3] > 0 ? global[4 + i] / global[3] : 0.0;
+  }
+  out.numFree = gcounts[0];
+  out.numStick = gcounts[1];
+  out.numSlip = gcounts[2];
+
+  // Zone sizes need all points: gather (coordinate, status) everywhere.
+  std::vector<double> mine;
+  for (const auto& p : points) {
+    double rel[3] = {0, 0, 0}, along = 0.0;
+    for (int i = 0; i < dim; ++i)
+      rel[i] = p.x[i] - out.center[i];
+    for (int i = 0; i < dim; ++i)
+      along += rel[i] * obstacleNormal[i];
+    double s;
+    if (dim == 2) {
+      // Signed coordinate along the plane's tangent (−ν_y, ν_x).
+      s = -rel[0] * obstacleNormal[1] + rel[1] * obstacleNormal[0];
+    } else {
+      double r2 = 0.0;
+      for (int i = 0; i < 3; ++i)
+        r2 += std::pow(rel[i] - along * obstacleNormal[i], 2);
+      s = std::sqrt(r2);
+    }
+    mine.push_back(s);
+    mine.push_back(static_cast<double>(static_cast<int>(p.status)));
+  }
+  int n = static_cast<int>(mine.size()), total = 0;
+  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_SUM, 1, &n, &total);
+  std::vector<int> sizes(comm.getSize());
+  Teuchos::gatherAll<int, int>(comm, 1, &n, comm.getSize(), sizes.data());
+  std::vector<double> all(total);
+  // Variable-size all-gather through a zero-padded sum (counts are small).
+  std::vector<double> padded(total, 0.0);
+  int offset = 0;
+  for (int r = 0; r < comm.getRank(); ++r)
+    offset += sizes[r];
+  std::copy(mine.begin(), mine.end(), padded.begin() + offset);
+  if (total > 0)
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, total, padded.data(), all.data());
+  std::vector<double> s;
+  std::vector<char> active, stick;
+  for (int i = 0; i + 1 < total; i += 2) {
+    s.push_back(all[i]);
+    active.push_back(all[i + 1] != 0.0);
+    stick.push_back(all[i + 1] == 1.0);
+  }
+  out.zoneSize = zoneSize(s, active, dim == 2);
+  out.stickZoneSize = zoneSize(s, stick, dim == 2);
+  return out;
+}
+
+}  // namespace sc::contact

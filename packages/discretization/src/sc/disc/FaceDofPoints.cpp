@@ -1,0 +1,97 @@
+#include "sc/disc/FaceDofPoints.hpp"
+
+#include <cmath>
+
+#include <Intrepid2_CellTools.hpp>
+#include <Intrepid2_OrientationTools.hpp>
+#include <Intrepid2_PointTools.hpp>
+
+#include <sc/core/Error.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+
+#include "sc/disc/MixedElasticitySpace.hpp"
+#include "sc/disc/detail/Intrepid2Impl.hpp"
+
+namespace sc::disc {
+
+std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space, int e, int lf)
+{
+  const auto& si = space.impl();
+  const auto& m = space.mesh();
+  const int d = si.dim, n = space.degree() + 1;  // Intrepid2 order
+  const int side = si.meshFaceToSide[lf];
+  const shards::CellTopology sideTopo = si.topology.getCellTopologyData(d - 1, 0);
+  // Interior lattice points of the side: order n+1 on an edge (n points), n+2 on a triangle
+  // (n(n+1)/2 points) — as many as the side has DOFs.
+  const int order = d == 2 ? n + 1 : n + 2;
+  const int np = Intrepid2::PointTools::getLatticeSize(sideTopo, order, 1);
+  const auto& faceDofs = space.stressFaceLocalDofs(lf);
+  SC_THROW_IF(np != static_cast<int>(faceDofs.size()), core::InternalError,
+              "face lattice has " << np << " points for " << faceDofs.size() << " face DOFs");
+  View param("param", np, d - 1), ref("ref", np, d);
+  Intrepid2::PointTools::getLattice(param, sideTopo, order, 1, Intrepid2::POINTTYPE_EQUISPACED);
+  Intrepid2::CellTools<Device>::mapToReferenceSubcell(ref, param, d - 1, side, si.topology);
+  const int nRT = si.rt->getCardinality();
+  View vals("vals", nRT, np, d), oriented("oriented", 1, nRT, np, d);
+  si.rt->getValues(vals, ref, Intrepid2::OPERATOR_VALUE);
+  Kokkos::DynRankView<Intrepid2::Orientation, Device> ort("ort", 1);
+  ort(0) = si.orientation(m.elementVertices(e));
+  Intrepid2::OrientationTools<Device>::modifyBasisByOrientation(oriented, vals, ort, si.rt.get());
+
+  // Affine map and Piola transform (as in ElementValues).
+  const int* v = m.elementVertices(e);
+  double J[3][3] = {{0}}, det;
+  for (int j = 0; j < d; ++j)
+    for (int i = 0; i < d; ++i)
+      J[i][j] = m.vertex(v[j + 1])[i] - m.vertex(v[0])[i];
+  det = d == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
+               : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+                     J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                     J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+  const int f = m.elementFaces(e)[lf];
+  auto normal = m.faceNormal(f);
+  if (m.faceElements(f)[0] != e)
+    for (double& c : normal)
+      c = -c;
+
+  // T(l, j) = (φ_j·n)(p_l) for the face DOFs.
+  const int nF = static_cast<int>(faceDofs.size());
+  std::vector<double> T(static_cast<std::size_t>(np) * nF);
+  for (int l = 0; l < np; ++l)
+    for (int j = 0; j < nF; ++j) {
+      double flux = 0.0;
+      for (int i = 0; i < d; ++i) {
+        double phi = 0.0;
+        for (int k = 0; k < d; ++k)
+          phi += J[i][k] * oriented(0, faceDofs[j], l, k);
+        flux += phi / det * normal[i];
+      }
+      T[l * nF + j] = flux;
+    }
+  std::vector<FaceDofPoint> points(nF);
+  std::vector<bool> used(nF, false);
+  for (int l = 0; l < np; ++l) {
+    int best = 0;
+    for (int j = 1; j < nF; ++j)
+      if (std::abs(T[l * nF + j]) > std::abs(T[l * nF + best]))
+        best = j;
+    const double s = T[l * nF + best];
+    for (int j = 0; j < nF; ++j)
+      SC_THROW_IF(j != best && std::abs(T[l * nF + j]) > 1e-10 * std::abs(s), core::InternalError,
+                  "RT face DOFs of element " << e << " are not point values at the face lattice "
+                  "(the contact method needs nodal DOFs, DESIGN §3)");
+    SC_THROW_IF(used[best], core::InternalError, "two lattice points share face DOF " << best);
+    used[best] = true;
+    FaceDofPoint& p = points[best];
+    p.localDof = faceDofs[best];
+    p.scale = s;
+    for (int i = 0; i < d; ++i) {
+      p.x[i] = m.vertex(v[0])[i];
+      for (int k = 0; k < d; ++k)
+        p.x[i] += J[i][k] * ref(l, k);
+    }
+  }
+  return points;
+}
+
+}  // namespace sc::disc

@@ -1,0 +1,26 @@
+#pragma once
+// The RT face DOFs of Intrepid2's HDIV In_FEM bases (equispaced lattice) are point values of the
+// normal flux at lattice points of the face, up to a scale: DOF j of a face is ±(φ_j·n)(p_j)
+// times a face-size factor (DESIGN §3). Contact works with these points, so this finds them:
+// for each face DOF, its physical point p_j and s_j = (φ_j·n)(p_j) with the outward unit normal
+// n of the element (sign included), after checking (φ_j·n)(p_l) = 0 for l ≠ j. An element's
+// traction at p_j is then t_i(p_j) = s_j c_{i,j} with c_{i,j} the coefficient of row i's DOF j.
+#include <array>
+#include <vector>
+
+namespace sc::disc {
+
+class MixedElasticitySpace;
+
+struct FaceDofPoint {
+  int localDof = -1;            ///< element-local RT index (within one row block)
+  std::array<double, 3> x{};    ///< physical point p_j
+  double scale = 0.0;           ///< s_j = (φ_j·n)(p_j), outward n
+};
+
+/// The DOF points of element `element`'s face opposite local vertex `localFace`. Throws
+/// InternalError if the face DOFs are not point values (the contact method needs them).
+std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space, int element,
+                                              int localFace);
+
+}  // namespace sc::disc
