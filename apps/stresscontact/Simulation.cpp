@@ -1,12 +1,18 @@
 #include "Simulation.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
+#include <map>
 #include <numeric>
 #include <sstream>
 
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/ContactSummary.hpp>
+#include <sc/io/CsvWriter.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -58,9 +64,6 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   solver_ = solvers::createDirectSolver(params_->sublist("Linear Solver"));
 
   // What this build cannot compute yet, stated rather than faked.
-  if (boundaryConditions_.hasContact())
-    phasesMissing_.push_back(std::string("contact") +
-                             (contact_.needsFriction() ? " with friction" : "") + " (issue #5)");
   phasesMissing_.push_back("error estimator (issue #6)");
 }
 
@@ -69,7 +72,8 @@ Simulation::~Simulation() = default;
 void Simulation::setupMesh()
 {
   auto t = timers_.scope("mesh");
-  refiner_ = mesh::MeshFactory::build(params_->sublist("Mesh"), problem_.dimension);
+  // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
+  refiner_ = mesh::MeshFactory::build(params_->sublist("Mesh"), problem_.dimension, *comm_);
   mesh_ = refiner_->mesh();
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
@@ -92,7 +96,7 @@ void Simulation::partitionMesh()
   elementOwner_ = mesh::partitionElements(*mesh_, *comm_);
 }
 
-void Simulation::solveElasticity()
+void Simulation::setupElasticity()
 {
   {
     auto t = timers_.scope("setup");
@@ -109,6 +113,11 @@ void Simulation::solveElasticity()
     assembler_->assemble({material_, boundaryConditions_, exact_.get()});
   }
   progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
+}
+
+void Simulation::solveElasticity()
+{
+  setupElasticity();
   {
     auto t = timers_.scope("solve");
     // Without contact rows the system is symmetric (tractions are eliminated symmetrically).
@@ -125,6 +134,61 @@ void Simulation::solveElasticity()
   solved_ = true;
 }
 
+void Simulation::solveContact(int cycle)
+{
+  setupElasticity();
+  {
+    auto t = timers_.scope("contact setup");
+    contact_solver_ = std::make_unique<contact::ActiveSetSolver>(
+        *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
+        params_->sublist("Contact").sublist("Newton"), comm_);
+    contact_solver_->setInitialState(previousPoints_);
+  }
+  progress_.report("contact", std::to_string(contact_solver_->globalNumPoints()) + " contact points, " +
+                                  (contact_solver_->hasFriction() ? "with" : "without") + " friction");
+  solution_ = assembler_->createVector();
+  {
+    auto t = timers_.scope("solve");
+    contact_solver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
+  }
+  const auto& st = contact_solver_->statistics();
+  std::ostringstream os;
+  os << st.newtonIterations << " Newton steps, changes per step:";
+  for (int c : st.changesPerIteration)
+    os << " " << c;
+  progress_.report("contact solve", os.str());
+  previousPoints_ = contact_solver_->points();
+  solved_ = true;
+
+  if (output_.writeContactCsv) {
+    auto t = timers_.scope("output");
+    const int d = problem_.dimension;
+    std::vector<std::string> header = {"x", "y"};
+    if (d == 3)
+      header.push_back("z");
+    header.insert(header.end(), {"sigma_n", "sigma_t"});
+    if (d == 3)
+      header.push_back("sigma_t2");
+    header.insert(header.end(), {"weighted_gap", "weighted_slip", "status"});
+    io::CsvWriter csv(header);
+    for (const auto& p : contact_solver_->points()) {
+      io::CsvWriter::Row row;
+      for (int i = 0; i < d; ++i)
+        row.push_back(p.x[i]);
+      row.push_back(p.sigmaN);
+      for (int k = 0; k < d - 1; ++k)
+        row.push_back(p.sigmaT[k]);
+      row.push_back(p.gap - p.rN);  // G − r_N ≥ 0: weighted gap left open
+      row.push_back(d == 2 ? p.rT[0] : std::hypot(p.rT[0], p.rT[1]));
+      row.push_back(contact::toString(p.status));
+      csv.addRow(row);
+    }
+    char name[64];
+    std::snprintf(name, sizeof(name), "/contact_cycle%d.csv", cycle);
+    csv.writeGathered(*comm_, output_.directory + name);
+  }
+}
+
 void Simulation::checkScene()
 {
   setupMesh();
@@ -134,13 +198,33 @@ void Simulation::recordCycle(int cycle)
 {
   nlohmann::ordered_json& c = summary_->addCycle(cycle);
   c["elements"] = mesh_->numElements();
+  if (solved_ && contact_solver_) {
+    const int d = problem_.dimension;
+    const auto cs = contact::summarizeContact(contact_solver_->points(), d, contact_.obstacleNormal, *comm_);
+    const auto& st = contact_solver_->statistics();
+    std::vector<double> force(cs.force.begin(), cs.force.begin() + d);
+    c["contact"] = {{"force", force},
+                    {d == 2 ? "half_width" : "radius", cs.zoneSize},
+                    {"max_pressure", cs.maxPressure},
+                    {d == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
+                    {"points", {{"free", cs.numFree}, {"stick", cs.numStick}, {"slip", cs.numSlip}}},
+                    {"newton_iterations", st.newtonIterations},
+                    {"cycle_remedies", st.remedies}};
+    c["nonlinear_iterations"] = st.newtonIterations;
+    std::ostringstream os;
+    os << "force (" << force[0] << ", " << force[1] << (d == 3 ? ", " + std::to_string(force[2]) : "")
+       << "), " << (d == 2 ? "half-width " : "radius ") << cs.zoneSize << ", max pressure "
+       << cs.maxPressure << ", stick " << cs.stickZoneSize << " (" << cs.numStick << " stick, "
+       << cs.numSlip << " slip points)";
+    progress_.report("contact", os.str());
+  }
   if (solved_) {
     c["dofs"] = {{"stress", space_->numStressDofs()},
                  {"displacement", space_->numDisplacementDofs()},
                  {"rotation", space_->numRotationDofs()},
                  {"total", space_->numGlobalDofs()}};
     const auto& st = solver_->lastSolveStats();
-    c["linear_iterations"] = 1;  // direct solve
+    c["linear_iterations"] = contact_solver_ ? contact_solver_->statistics().newtonIterations : 1;  // one direct solve per (Newton) step
     c["linear_solver"] = {{"type", solver_->name()},
                           {"relative_residual", st.relativeResidual},
                           {"symbolic_reuses", st.symbolicReuses},
@@ -240,6 +324,26 @@ void Simulation::writeFields(int cycle)
       boundary.connectivity.push_back(newId[fv[i]]);
     boundaryId.push_back(mesh_->faceBoundaryId(f));
   }
+  if (contact_solver_) {
+    // Mean contact pressure −σ_N and tangential traction of each contact face's points.
+    std::map<int, std::array<double, 3>> perFace;  // face -> (Σ −σ_N, Σ σ_T1, count)
+    for (const auto& p : contact_solver_->points()) {
+      auto& acc = perFace[p.face];
+      acc[0] += -p.sigmaN;
+      acc[1] += p.sigmaT[0];
+      acc[2] += 1.0;
+    }
+    std::vector<double> pressure, shear;
+    for (int f : mesh_->boundaryFaces()) {
+      if (elementOwner_[mesh_->faceElements(f)[0]] != rank)
+        continue;
+      auto it = perFace.find(f);
+      pressure.push_back(it == perFace.end() ? 0.0 : it->second[0] / it->second[2]);
+      shear.push_back(it == perFace.end() ? 0.0 : it->second[1] / it->second[2]);
+    }
+    boundary.addCellField("contact_pressure", io::FieldKind::Scalar, std::move(pressure));
+    boundary.addCellField("tangential_traction", io::FieldKind::Scalar, std::move(shear));
+  }
   boundary.addCellField("boundary_id", std::move(boundaryId));
   std::map<int, std::string> names;
   const auto& bn = mesh_->boundaryNames();
@@ -274,7 +378,9 @@ void Simulation::run()
       if (cycle > 0)
         refineMesh();
       partitionMesh();
-      if (!boundaryConditions_.hasContact())
+      if (boundaryConditions_.hasContact())
+        solveContact(cycle);
+      else
         solveElasticity();
       writeFields(cycle);
       recordCycle(cycle);
@@ -286,6 +392,11 @@ void Simulation::run()
     summary_->setConverged(solved_);
     summary_->write();
     progress_.message("done: " + output_.directory + "/summary.json");
+  } catch (const core::ConvergenceError& e) {
+    // Collective (the active-set decision is global): every rank gets here.
+    summary_->setError(e.what());
+    summary_->write();
+    throw;
   } catch (const std::exception& e) {
     summary_->setError(e.what());
     summary_->writeLocal();

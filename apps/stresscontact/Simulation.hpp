@@ -40,6 +40,10 @@ class DirectSolver;
 namespace sc::core {
 class ExactSolution;
 }
+namespace sc::contact {
+class ActiveSetSolver;
+struct ContactPoint;
+}
 
 namespace sc::app {
 
@@ -63,7 +67,9 @@ private:
   void setupMesh();
   void refineMesh();
   void partitionMesh();
+  void setupElasticity();
   void solveElasticity();
+  void solveContact(int cycle);
   void writeFields(int cycle);
   void recordCycle(int cycle);
 
@@ -95,6 +101,11 @@ private:
   Teuchos::RCP<solvers::DirectSolver> solver_;
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;
   bool solved_ = false;
+
+  // Contact (a boundary of Type Contact): the active-set solver of the cycle and the points of
+  // the previous cycle (nested iteration: the next cycle starts from their state).
+  std::unique_ptr<contact::ActiveSetSolver> contact_solver_;
+  std::vector<contact::ContactPoint> previousPoints_;
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<io::XdmfWriter> writer_;

@@ -116,6 +116,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
       const double hF = d == 2 ? area : std::sqrt(area);
       for (const auto& dp : dofPoints) {
         ContactPoint p;
+        p.face = f;
         for (int i = 0; i < d; ++i)
           p.gids[i] = space.elementDofs(e)[space.stressOffset(i) + dp.localDof];
         p.x = dp.x;

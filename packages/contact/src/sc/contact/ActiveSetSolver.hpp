@@ -45,6 +45,7 @@ std::string toString(PointStatus s);
 
 struct ContactPoint {
   std::array<long long, 3> gids{};  ///< the d row DOFs at this point
+  int face = -1;                     ///< mesh face
   std::array<double, 3> x{};
   std::array<double, 3> n{}, t1{}, t2{};
   double scale = 0.0;    ///< s_p: traction = scale × coefficient
