@@ -7,7 +7,9 @@
 #include <numeric>
 #include <sstream>
 
+#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
@@ -122,11 +124,18 @@ void Simulation::solveElasticity()
     auto t = timers_.scope("solve");
     // Without contact rows the system is symmetric (tractions are eliminated symmetrically).
     solver_->setSymmetric(true);
-    solver_->setOperator(assembler_->matrix());
-    solver_->symbolicFactorization();
-    solver_->numericFactorization();
+    // Solve D M D y = D b, x = D y with the physical block scaling (robust in E).
+    auto D = assembler_->physicalScaling(2.0 * material_.shearModulus())->getVector(0);
+    auto M = Teuchos::rcp(new Tpetra::CrsMatrix<>(*assembler_->matrix(), Teuchos::Copy));
+    M->leftScale(*D);
+    M->rightScale(*D);
+    auto b = assembler_->createVector();
+    b->elementWiseMultiply(1.0, *D, *assembler_->rhs(), 0.0);
+    auto y = assembler_->createVector();
+    solver_->setOperator(M);
+    solver_->solve(*b, *y);
     solution_ = assembler_->createVector();
-    solver_->solve(*assembler_->rhs(), *solution_);
+    solution_->elementWiseMultiply(1.0, *D, *y, 0.0);
   }
   std::ostringstream os;
   os << solver_->name() << ", relative residual " << solver_->lastSolveStats().relativeResidual;
@@ -149,7 +158,8 @@ void Simulation::solveContact(int cycle)
   solution_ = assembler_->createVector();
   {
     auto t = timers_.scope("solve");
-    contact_solver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
+    auto D = assembler_->physicalScaling(2.0 * material_.shearModulus());
+    contact_solver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_, D.get());
   }
   const auto& st = contact_solver_->statistics();
   std::ostringstream os;

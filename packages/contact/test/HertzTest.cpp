@@ -22,6 +22,9 @@ namespace {
 
 struct HertzCase {
   int dim = 2;
+  std::string source;       ///< default: Half disc / Half ball
+  std::string contactName;  ///< default: Arc / Cap
+  double refineCenterY = 0.0;
   double E = 20600.0, nu = 0.28, displacement = 0.01;
   sc::core::FrictionLaw law = sc::core::FrictionLaw::None;
   double mu = 0.0;
@@ -43,7 +46,7 @@ HertzResult solveHertz(const HertzCase& h)
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int d = h.dim;
   Teuchos::ParameterList meshList;
-  meshList.set("Source", std::string(d == 2 ? "Half disc" : "Half ball"));
+  meshList.set("Source", h.source.empty() ? std::string(d == 2 ? "Half disc" : "Half ball") : h.source);
   meshList.set("Initial mesh size", h.meshSize);
   auto refiner = sc::mesh::MeshFactory::build(meshList, d, *comm);
   for (int r = 0; r < h.localRefinements; ++r) {
@@ -54,6 +57,7 @@ HertzResult solveHertz(const HertzCase& h)
       for (int i = 0; i <= d; ++i)
         for (int j = 0; j < d; ++j)
           c[j] += m->vertex(m->elementVertices(e)[i])[j] / (d + 1);
+      c[1] -= h.refineCenterY;
       if (std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < h.refineRadius)
         marked.push_back(e);
     }
@@ -67,7 +71,7 @@ HertzResult solveHertz(const HertzCase& h)
   std::vector<double> uD(d, 0.0);
   uD[d - 1] = -h.displacement;
   bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, uD, false});
-  const std::string contactName = d == 2 ? "Arc" : "Cap";
+  const std::string contactName = !h.contactName.empty() ? h.contactName : (d == 2 ? "Arc" : "Cap");
   bcs.conditions.push_back({contactName, sc::core::BoundaryType::Contact, {}, false});
   sc::core::Material material{h.E, h.nu};
   assembler.assemble({material, bcs, nullptr});
@@ -83,7 +87,8 @@ HertzResult solveHertz(const HertzCase& h)
   solverList.set("Type", h.solver);
   auto solver = sc::solvers::createDirectSolver(solverList);
   auto x = assembler.createVector();
-  contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
+  auto D = assembler.physicalScaling(2.0 * material.shearModulus());
+  contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x, D.get());
   HertzResult r;
   r.summary = sc::contact::summarizeContact(contact.points(), d, cs.obstacleNormal, *comm);
   r.points = contact.points();
@@ -145,5 +150,93 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb2D)
                    1e-9 * std::abs(p.sigmaN));
     if (p.status == sc::contact::PointStatus::Stick)
       TEST_COMPARE(std::abs(p.sigmaT[0]), <=, h.mu * std::abs(p.sigmaN) * (1 + 1e-9));
+  }
+}
+
+namespace {
+
+// max |a_i − factor·b_i| / max |factor·b_i| over the entries selected by `mask` (local).
+double relativeDifference(const std::vector<double>& a, const std::vector<double>& b, double factor)
+{
+  double diff = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    diff = std::max(diff, std::abs(a[i] - factor * b[i]));
+    norm = std::max(norm, std::abs(factor * b[i]));
+  }
+  return norm > 0 ? diff / norm : diff;
+}
+
+HertzCase coarseHertz()
+{
+  HertzCase h;
+  h.localRefinements = 3;
+  return h;
+}
+
+}  // namespace
+
+TEUCHOS_UNIT_TEST(Hertz, ZeroFrictionEqualsFrictionless)
+{
+  // μ_F = 0 with the Coulomb law builds no friction rows: the same system, the same solution.
+  HertzCase a = coarseHertz();
+  HertzCase b = coarseHertz();
+  b.law = sc::core::FrictionLaw::Coulomb;
+  b.mu = 0.0;
+  const auto ra = solveHertz(a), rb = solveHertz(b);
+  TEST_COMPARE(relativeDifference(rb.x, ra.x, 1.0), <=, 1e-12);
+}
+
+TEUCHOS_UNIT_TEST(Hertz, LargeFrictionSticks)
+{
+  HertzCase h = coarseHertz();
+  h.law = sc::core::FrictionLaw::Coulomb;
+  h.mu = 10.0;
+  const auto r = solveHertz(h);
+  out << "mu = 10: stick " << r.summary.numStick << ", slip " << r.summary.numSlip << "\n";
+  TEST_ASSERT(r.stats.converged);
+  // (Almost) full stick: at most the two outermost active points slip.
+  TEST_COMPARE(r.summary.numSlip, <=, 2);
+  TEST_COMPARE(r.summary.numStick, >, 0);
+}
+
+TEUCHOS_UNIT_TEST(Hertz, YoungModulusScalesStressOnly)
+{
+  // Displacement-driven: E × 10⁶ multiplies σ by 10⁶ and leaves u, θ and the contact set alone.
+  HertzCase a = coarseHertz(), b = coarseHertz();
+  a.law = b.law = sc::core::FrictionLaw::Coulomb;
+  a.mu = b.mu = 0.4;
+  b.E = a.E * 1e6;
+  const auto ra = solveHertz(a), rb = solveHertz(b);
+  TEST_EQUALITY(ra.summary.numStick, rb.summary.numStick);
+  TEST_EQUALITY(ra.summary.numSlip, rb.summary.numSlip);
+  TEST_FLOATING_EQUALITY(rb.summary.force[1], 1e6 * ra.summary.force[1], 1e-9);
+  TEST_FLOATING_EQUALITY(rb.summary.maxPressure, 1e6 * ra.summary.maxPressure, 1e-9);
+}
+
+TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
+{
+  // Unit square on the plane y = 0 (zero initial gap), Top pushed down: the whole bottom is in
+  // contact at any load, so tractions and displacements scale with the load (Coulomb is
+  // positively homogeneous), from 10⁻⁶ to 10 times the base load.
+  HertzCase base;
+  base.source = "Unit square";
+  base.contactName = "Bottom";
+  base.meshSize = 0.125;
+  base.localRefinements = 0;
+  base.law = sc::core::FrictionLaw::Coulomb;
+  base.mu = 0.4;
+  base.displacement = 0.01;
+  const auto r0 = solveHertz(base);
+  TEST_ASSERT(r0.stats.converged);
+  TEST_EQUALITY(r0.summary.numFree, 0);
+  for (double factor : {1e-6, 10.0}) {
+    HertzCase h = base;
+    h.displacement = base.displacement * factor;
+    const auto r = solveHertz(h);
+    out << "load x" << factor << ": force " << r.summary.force[1] << " (base "
+        << r0.summary.force[1] << "), Newton steps " << r.stats.newtonIterations << "\n";
+    TEST_ASSERT(r.stats.converged);
+    TEST_EQUALITY(r.summary.numStick, r0.summary.numStick);
+    TEST_COMPARE(relativeDifference(r.x, r0.x, factor), <=, 1e-8);
   }
 }

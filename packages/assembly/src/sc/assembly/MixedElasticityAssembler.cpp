@@ -340,6 +340,16 @@ Teuchos::RCP<const MultiVector> MixedElasticityAssembler::rhs() const { return i
 Teuchos::RCP<const Map> MixedElasticityAssembler::ownedMap() const { return impl_->owned; }
 Teuchos::RCP<const Map> MixedElasticityAssembler::overlapMap() const { return impl_->overlap; }
 
+Teuchos::RCP<const MultiVector> MixedElasticityAssembler::physicalScaling(double twoMu) const
+{
+  auto D = Teuchos::rcp(new MultiVector(impl_->owned, 1));
+  auto data = D->getDataNonConst(0);
+  const double s = std::sqrt(twoMu);
+  for (std::size_t i = 0; i < data.size(); ++i)
+    data[i] = impl_->owned->getGlobalElement(i) < space_->numStressDofs() ? s : 1.0 / s;
+  return D;
+}
+
 Teuchos::RCP<MultiVector> MixedElasticityAssembler::createVector() const
 {
   return Teuchos::rcp(new MultiVector(impl_->owned, 1));

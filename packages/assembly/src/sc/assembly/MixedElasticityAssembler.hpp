@@ -71,6 +71,10 @@ public:
   /// The values of an owned-map vector on the overlap map (for element-wise postprocessing).
   Teuchos::RCP<MultiVector> toOverlap(const MultiVector& owned) const;
   const AssemblyStatistics& statistics() const { return stats_; }
+  /// Symmetric block scaling D (√(2μ) on σ DOFs, 1/√(2μ) on u and θ DOFs): D M D has an A block
+  /// of order one whatever E is, which a row/column equilibration cannot find (the rows of σ have
+  /// O(1) entries from B either way). Solve D M D y = D b, x = D y (DESIGN §3: "equilibrate").
+  Teuchos::RCP<const MultiVector> physicalScaling(double twoMu) const;
   const disc::MixedElasticitySpace& space() const { return *space_; }
 
   struct Impl;

@@ -6,6 +6,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
@@ -316,10 +317,14 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
         for (int i = 0; i < d; ++i)
           newRhs += dir[i] * bData[lid[i]];
       } else {
+        // A traction row (σ·e = value) is rescaled to the size of the row it replaces (its
+        // A-block diagonal), so that the system's rows stay comparable under any E.
+        const double w = std::abs(entry(r, colMap.getLocalElement(p.gids[r]))) / std::abs(p.scale);
         for (std::size_t c = 0; c < cols[r].size(); ++c)
           for (int i = 0; i < d; ++i)
             if (cols[r][c] == colMap.getLocalElement(p.gids[i]))
-              newVals[c] += coeff[i];
+              newVals[c] += w * coeff[i];
+        newRhs *= w;
       }
       A->replaceLocalValues(lid[r], Teuchos::ArrayView<const LO>(cols[r]),
                             Teuchos::ArrayView<const double>(newVals));
@@ -331,8 +336,13 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
 }
 
 void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
-                            solvers::DirectSolver& solver, MultiVector& x)
+                            solvers::DirectSolver& solver, MultiVector& x,
+                            const MultiVector* scaling)
 {
+  Teuchos::RCP<const Tpetra::Vector<>> D;
+  if (scaling)
+    D = scaling->getVector(0);
+  MultiVector y(b.getMap(), 1), scaledRhs(b.getMap(), 1);
   stats_ = ContactStatistics();
   MultiVector rhs(b.getMap(), 1);
   std::vector<std::vector<int>> history;  // local state signature per iteration
@@ -347,9 +357,18 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   solver.setSymmetric(false);
   for (int it = 1; it <= maxIterations_; ++it) {
     auto A = modifiedMatrix(K, rhs, b);
-    // Same graph every step: the solver keeps its symbolic analysis and refactorises.
-    solver.setOperator(A);
-    solver.solve(rhs, x);
+    if (D.is_null()) {
+      // Same graph every step: the solver keeps its symbolic analysis and refactorises.
+      solver.setOperator(A);
+      solver.solve(rhs, x);
+    } else {
+      A->leftScale(*D);
+      A->rightScale(*D);
+      scaledRhs.elementWiseMultiply(1.0, *D, rhs, 0.0);
+      solver.setOperator(A);
+      solver.solve(scaledRhs, y);
+      x.elementWiseMultiply(1.0, *D, y, 0.0);
+    }
     stats_.newtonIterations = it;
     evaluate(K, b, x);
     const int changes = updateState(false);

@@ -87,8 +87,9 @@ public:
   /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact
   /// terms; x: initial guess in, solution out. Throws ConvergenceError if the state does not
   /// settle within the limits (statistics() then says converged = false).
+  /// `scaling` (optional): the symmetric block scaling D of the assembler (physicalScaling).
   void solve(const CrsMatrix& K, const MultiVector& b, solvers::DirectSolver& solver,
-             MultiVector& x);
+             MultiVector& x, const MultiVector* scaling = nullptr);
 
   const std::vector<ContactPoint>& points() const { return points_; }
   const ContactStatistics& statistics() const { return stats_; }
