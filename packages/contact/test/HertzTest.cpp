@@ -2,6 +2,7 @@
 // plane-strain Hertz (Johnson 1985): E* = E/(1−ν²), a = √(4PR/(πE*)), p0 = 2P/(πa),
 // p(x) = p0 √(1 − x²/a²), with P the computed resultant (the half disc is finite).
 #include <cmath>
+#include <iostream>
 
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
@@ -67,6 +68,8 @@ HertzResult solveHertz(const HertzCase& h)
   auto owner = sc::mesh::partitionElements(*m, *comm);
   auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, 1, owner, comm->getRank()));
   sc::assembly::MixedElasticityAssembler assembler(space, comm);
+  if (comm->getRank() == 0)
+    std::cout << "  [" << m->numElements() << " elements, " << space->numGlobalDofs() << " DOFs]" << std::endl;
   sc::core::BoundaryConditions bcs;
   std::vector<double> uD(d, 0.0);
   uD[d - 1] = -h.displacement;
@@ -105,6 +108,7 @@ double hertzHalfWidth(double P, double E, double nu)
 
 }  // namespace
 
+#ifndef SC_HERTZ_3D
 TEUCHOS_UNIT_TEST(Hertz, Frictionless2D)
 {
   HertzCase h;
@@ -240,3 +244,60 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
     TEST_COMPARE(relativeDifference(r.x, r0.x, factor), <=, 1e-8);
   }
 }
+
+#endif  // !SC_HERTZ_3D
+
+#ifdef SC_HERTZ_3D
+// 3D cases: a separate, serial executable (contact_hertz3d) — they are much more expensive.
+TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
+{
+  // Sphere (Johnson 1985): a³ = 3PR/(4E*), p0 = 3P/(2πa²), with P the computed resultant.
+  HertzCase h;
+  h.dim = 3;
+  h.E = 2.5;
+  h.nu = 0.25;
+  h.displacement = 0.025;
+  h.meshSize = 0.25;
+  h.localRefinements = 3;
+  h.refineRadius = 0.2;
+  const auto r = solveHertz(h);
+  const double P = r.summary.force[2];
+  const double Estar = h.E / (1 - h.nu * h.nu);
+  const double a = std::cbrt(3.0 * P / (4.0 * Estar)), p0 = 3.0 * P / (2.0 * M_PI * a * a);
+  out << "3D: P = " << P << ", radius " << r.summary.zoneSize << " (Hertz " << a << "), p0 "
+      << r.summary.maxPressure << " (Hertz " << p0 << "), Newton steps "
+      << r.stats.newtonIterations << ", centre (" << r.summary.center[0] << ", "
+      << r.summary.center[1] << ")\n";
+  TEST_ASSERT(r.stats.converged);
+  TEST_COMPARE(std::abs(r.summary.zoneSize - a), <=, 0.05 * a);
+  TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, 0.05 * p0);
+  TEST_COMPARE(std::hypot(r.summary.force[0], r.summary.force[1]), <=, 1e-3 * P);
+}
+
+TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
+{
+  HertzCase h;
+  h.dim = 3;
+  h.E = 2.5;
+  h.nu = 0.25;
+  h.displacement = 0.025;
+  h.meshSize = 0.25;
+  h.localRefinements = 3;
+  h.refineRadius = 0.2;
+  h.law = sc::core::FrictionLaw::Coulomb;
+  h.mu = 0.4;
+  const auto r = solveHertz(h);
+  out << "3D Coulomb: radius " << r.summary.zoneSize << ", stick radius " << r.summary.stickZoneSize
+      << ", stick/slip " << r.summary.numStick << "/" << r.summary.numSlip << ", Newton steps "
+      << r.stats.newtonIterations << "\n";
+  TEST_ASSERT(r.stats.converged);
+  TEST_COMPARE(r.summary.numStick, >, 0);
+  // The friction disc holds at every point, with equality on slip points.
+  for (const auto& p : r.points) {
+    const double t = std::hypot(p.sigmaT[0], p.sigmaT[1]), bound = h.mu * std::abs(p.sigmaN);
+    TEST_COMPARE(t, <=, bound * (1 + 1e-8) + 1e-12);
+    if (p.status == sc::contact::PointStatus::Slip)
+      TEST_COMPARE(std::abs(t - bound), <=, 1e-8 * bound);
+  }
+}
+#endif  // SC_HERTZ_3D

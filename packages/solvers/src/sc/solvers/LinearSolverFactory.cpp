@@ -65,7 +65,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
   static const Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     using namespace sc::core;
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
-    declareChoice(*pl, "Type", "KLU2", knownTypes(),
+    declareChoice(*pl, "Type", "MUMPS", knownTypes(),
                   "Direct solver for the saddle-point system (DESIGN §6): KLU2 (Amesos2; gathers "
                   "the matrix on rank 0, serial LU) or MUMPS (parallel multifrontal LU/LDLᵀ).");
     declareBool(*pl, "Symmetric", false,
