@@ -6,6 +6,21 @@
 
 namespace sc::core {
 
+namespace {
+// θ from a displacement gradient g (row-major, g_ij = ∂_j u_i), as in ExactSolution::rotation.
+void rotationFromGradient(int d, const double* g, double* theta)
+{
+  auto G = [&](int i, int j) { return g[i * d + j]; };
+  if (d == 2) {
+    theta[0] = 0.5 * (G(0, 1) - G(1, 0));
+  } else {
+    theta[0] = 0.5 * (G(2, 1) - G(1, 2));
+    theta[1] = 0.5 * (G(0, 2) - G(2, 0));
+    theta[2] = 0.5 * (G(1, 0) - G(0, 1));
+  }
+}
+}  // namespace
+
 void ExactSolution::traction(const double* x, const double* n, double* t) const
 {
   const int d = dim();
@@ -119,15 +134,7 @@ void SmoothManufacturedSolution::rotation(const double* x, double* theta) const
   // The Hessian part of ∇u is symmetric: only u0 rotates.
   double u0[3], g[9];
   u0AndGradient(x, u0, g);
-  const int d = dim_;
-  auto G = [&](int i, int j) { return g[i * d + j]; };
-  if (d == 2) {
-    theta[0] = 0.5 * (G(0, 1) - G(1, 0));
-  } else {
-    theta[0] = 0.5 * (G(2, 1) - G(1, 2));
-    theta[1] = 0.5 * (G(0, 2) - G(2, 0));
-    theta[2] = 0.5 * (G(1, 0) - G(0, 1));
-  }
+  rotationFromGradient(dim_, g, theta);
 }
 
 void SmoothManufacturedSolution::bodyForce(const double* x, double* f) const
@@ -186,12 +193,7 @@ void LinearPatchSolution::stress(const double* x, double* sigma) const
   const double nu = material_.poissonRatio;
   const double lambda = 2.0 * mu * nu / (1.0 - 2.0 * nu);
   double g[9];
-  for (int i = 0; i < d; ++i)
-    for (int j = 0; j < d; ++j) {
-      g[i * d + j] = L(i, j);
-      for (int k = 0; k < d; ++k)
-        g[i * d + j] += (Q(i, j, k) + Q(i, k, j)) * x[k];
-    }
+  displacementGradient(x, g);
   double div = 0.0;
   for (int i = 0; i < d; ++i)
     div += g[i * d + i];
@@ -202,20 +204,20 @@ void LinearPatchSolution::stress(const double* x, double* sigma) const
 
 void LinearPatchSolution::rotation(const double* x, double* theta) const
 {
+  double g[9];
+  displacementGradient(x, g);
+  rotationFromGradient(dim_, g, theta);
+}
+
+void LinearPatchSolution::displacementGradient(const double* x, double* g) const
+{
   const int d = dim_;
-  auto G = [&](int i, int j) {
-    double v = L(i, j);
-    for (int k = 0; k < d; ++k)
-      v += (Q(i, j, k) + Q(i, k, j)) * x[k];
-    return v;
-  };
-  if (d == 2) {
-    theta[0] = 0.5 * (G(0, 1) - G(1, 0));
-  } else {
-    theta[0] = 0.5 * (G(2, 1) - G(1, 2));
-    theta[1] = 0.5 * (G(0, 2) - G(2, 0));
-    theta[2] = 0.5 * (G(1, 0) - G(0, 1));
-  }
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) {
+      g[i * d + j] = L(i, j);
+      for (int k = 0; k < d; ++k)
+        g[i * d + j] += (Q(i, j, k) + Q(i, k, j)) * x[k];
+    }
 }
 
 void LinearPatchSolution::bodyForce(const double*, double* f) const

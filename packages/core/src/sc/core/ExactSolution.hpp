@@ -66,6 +66,8 @@ public:
   void displacement(const double* x, double* u) const override;
   void rotation(const double* x, double* theta) const override;
   void bodyForce(const double* x, double* f) const override;
+  /// ∇u (linear in x).
+  void displacementGradient(const double* x, double* gradU) const;
 
 private:
   int dim_;

@@ -10,48 +10,13 @@
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "sc/disc/MixedElasticitySpace.hpp"
+#include "sc/disc/detail/AffineMap.hpp"
 #include "sc/disc/detail/Intrepid2Impl.hpp"
 
 namespace sc::disc {
 namespace {
 
 using OrtView = Kokkos::DynRankView<Intrepid2::Orientation, Device>;
-
-// Affine map of element e: x = x0 + J x̂ (J's columns are x_{i+1} − x_0), det J > 0 by the
-// mesh's orientation convention.
-struct AffineMap {
-  double x0[3] = {0, 0, 0};
-  double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  double det = 0.0;
-
-  AffineMap(const mesh::SimplexMesh& m, int e)
-  {
-    const int d = m.dim();
-    const int* v = m.elementVertices(e);
-    const double* p0 = m.vertex(v[0]);
-    for (int i = 0; i < d; ++i)
-      x0[i] = p0[i];
-    for (int j = 0; j < d; ++j) {
-      const double* pj = m.vertex(v[j + 1]);
-      for (int i = 0; i < d; ++i)
-        J[i][j] = pj[i] - p0[i];
-    }
-    det = d == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
-                 : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-                       J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                       J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-    SC_THROW_IF(!(det > 0.0), core::InternalError,
-                "element " << e << " has det J = " << det << " (mesh orientation convention broken)");
-  }
-  void map(const double* xh, int d, double* x) const
-  {
-    for (int i = 0; i < d; ++i) {
-      x[i] = x0[i];
-      for (int j = 0; j < d; ++j)
-        x[i] += J[i][j] * xh[j];
-    }
-  }
-};
 
 // Reference values of both bases at a set of reference points, and per-element oriented copies.
 struct Tabulation {

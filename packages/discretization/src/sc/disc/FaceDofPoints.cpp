@@ -10,6 +10,7 @@
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "sc/disc/MixedElasticitySpace.hpp"
+#include "sc/disc/detail/AffineMap.hpp"
 #include "sc/disc/detail/Intrepid2Impl.hpp"
 
 namespace sc::disc {
@@ -38,16 +39,7 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
   ort(0) = si.orientation(m.elementVertices(e));
   Intrepid2::OrientationTools<Device>::modifyBasisByOrientation(oriented, vals, ort, si.rt.get());
 
-  // Affine map and Piola transform (as in ElementValues).
-  const int* v = m.elementVertices(e);
-  double J[3][3] = {{0}}, det;
-  for (int j = 0; j < d; ++j)
-    for (int i = 0; i < d; ++i)
-      J[i][j] = m.vertex(v[j + 1])[i] - m.vertex(v[0])[i];
-  det = d == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
-               : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-                     J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                     J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+  const AffineMap F(m, e);
   const int f = m.elementFaces(e)[lf];
   auto normal = m.faceNormal(f);
   if (m.faceElements(f)[0] != e)
@@ -63,8 +55,8 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
       for (int i = 0; i < d; ++i) {
         double phi = 0.0;
         for (int k = 0; k < d; ++k)
-          phi += J[i][k] * oriented(0, faceDofs[j], l, k);
-        flux += phi / det * normal[i];
+          phi += F.J[i][k] * oriented(0, faceDofs[j], l, k);
+        flux += phi / F.det * normal[i];
       }
       T[l * nF + j] = flux;
     }
@@ -86,9 +78,9 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
     p.localDof = faceDofs[best];
     p.scale = s;
     for (int i = 0; i < d; ++i) {
-      p.x[i] = m.vertex(v[0])[i];
+      p.x[i] = F.x0[i];
       for (int k = 0; k < d; ++k)
-        p.x[i] += J[i][k] * ref(l, k);
+        p.x[i] += F.J[i][k] * ref(l, k);
     }
   }
   return points;
