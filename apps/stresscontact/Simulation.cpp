@@ -148,26 +148,26 @@ void Simulation::solveContact(int cycle)
   setupElasticity();
   {
     auto t = timers_.scope("contact setup");
-    contact_solver_ = std::make_unique<contact::ActiveSetSolver>(
+    contactSolver_ = std::make_unique<contact::ActiveSetSolver>(
         *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
         params_->sublist("Contact").sublist("Newton"), comm_);
-    contact_solver_->setInitialState(previousPoints_);
+    contactSolver_->setInitialState(previousPoints_);
   }
-  progress_.report("contact", std::to_string(contact_solver_->globalNumPoints()) + " contact points, " +
-                                  (contact_solver_->hasFriction() ? "with" : "without") + " friction");
+  progress_.report("contact", std::to_string(contactSolver_->globalNumPoints()) + " contact points, " +
+                                  (contactSolver_->hasFriction() ? "with" : "without") + " friction");
   solution_ = assembler_->createVector();
   {
     auto t = timers_.scope("solve");
     auto D = assembler_->physicalScaling(2.0 * material_.shearModulus());
-    contact_solver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_, D.get());
+    contactSolver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_, D.get());
   }
-  const auto& st = contact_solver_->statistics();
+  const auto& st = contactSolver_->statistics();
   std::ostringstream os;
   os << st.newtonIterations << " Newton steps, changes per step:";
   for (int c : st.changesPerIteration)
     os << " " << c;
   progress_.report("contact solve", os.str());
-  previousPoints_ = contact_solver_->points();
+  previousPoints_ = contactSolver_->points();
   solved_ = true;
 
   if (output_.writeContactCsv) {
@@ -181,7 +181,7 @@ void Simulation::solveContact(int cycle)
       header.push_back("sigma_t2");
     header.insert(header.end(), {"weighted_gap", "weighted_slip", "status"});
     io::CsvWriter csv(header);
-    for (const auto& p : contact_solver_->points()) {
+    for (const auto& p : contactSolver_->points()) {
       io::CsvWriter::Row row;
       for (int i = 0; i < d; ++i)
         row.push_back(p.x[i]);
@@ -208,10 +208,10 @@ void Simulation::recordCycle(int cycle)
 {
   nlohmann::ordered_json& c = summary_->addCycle(cycle);
   c["elements"] = mesh_->numElements();
-  if (solved_ && contact_solver_) {
+  if (solved_ && contactSolver_) {
     const int d = problem_.dimension;
-    const auto cs = contact::summarizeContact(contact_solver_->points(), d, contact_.obstacleNormal, *comm_);
-    const auto& st = contact_solver_->statistics();
+    const auto cs = contact::summarizeContact(contactSolver_->points(), d, contact_.obstacleNormal, *comm_);
+    const auto& st = contactSolver_->statistics();
     std::vector<double> force(cs.force.begin(), cs.force.begin() + d);
     c["contact"] = {{"force", force},
                     {d == 2 ? "half_width" : "radius", cs.zoneSize},
@@ -234,7 +234,7 @@ void Simulation::recordCycle(int cycle)
                  {"rotation", space_->numRotationDofs()},
                  {"total", space_->numGlobalDofs()}};
     const auto& st = solver_->lastSolveStats();
-    c["linear_iterations"] = contact_solver_ ? contact_solver_->statistics().newtonIterations : 1;  // one direct solve per (Newton) step
+    c["linear_iterations"] = contactSolver_ ? contactSolver_->statistics().newtonIterations : 1;  // one direct solve per (Newton) step
     c["linear_solver"] = {{"type", solver_->name()},
                           {"relative_residual", st.relativeResidual},
                           {"symbolic_reuses", st.symbolicReuses},
@@ -334,10 +334,10 @@ void Simulation::writeFields(int cycle)
       boundary.connectivity.push_back(newId[fv[i]]);
     boundaryId.push_back(mesh_->faceBoundaryId(f));
   }
-  if (contact_solver_) {
+  if (contactSolver_) {
     // Mean contact pressure −σ_N and tangential traction of each contact face's points.
     std::map<int, std::array<double, 3>> perFace;  // face -> (Σ −σ_N, Σ σ_T1, count)
-    for (const auto& p : contact_solver_->points()) {
+    for (const auto& p : contactSolver_->points()) {
       auto& acc = perFace[p.face];
       acc[0] += -p.sigmaN;
       acc[1] += p.sigmaT[0];

@@ -104,7 +104,7 @@ private:
 
   // Contact (a boundary of Type Contact): the active-set solver of the cycle and the points of
   // the previous cycle (nested iteration: the next cycle starts from their state).
-  std::unique_ptr<contact::ActiveSetSolver> contact_solver_;
+  std::unique_ptr<contact::ActiveSetSolver> contactSolver_;
   std::vector<contact::ContactPoint> previousPoints_;
 
   std::unique_ptr<io::RunSummary> summary_;

@@ -141,7 +141,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
   const double t0 = Teuchos::Time::wallTime();
   const auto& S = *space_;
   const auto& m = S.mesh();
-  const int d = S.dim(), k = S.degree(), L = S.localSize(), r = S.numRotationComponents();
+  const int d = S.dim(), k = S.degree(), L = S.localSize();
   const int nRT = S.stressBasisSize(), nDP = S.displacementBasisSize(), nCP = S.rotationBasisSize();
   const double inv2mu = 1.0 / (2.0 * data.material.shearModulus());
   const double cd = data.material.complianceCoefficient(d);
@@ -332,7 +332,6 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
   b.endAssembly();
   stats_.constrainedDofs = nConstrained;
   stats_.assemblySeconds = Teuchos::Time::wallTime() - t0;
-  (void)r;
 }
 
 Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::matrix() const { return impl_->matrix; }
