@@ -248,8 +248,8 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
 #endif  // !SC_HERTZ_3D
 
 #ifdef SC_HERTZ_3D
-// 3D case: a separate, serial executable (contact_hertz3d) — much more expensive. 3D Coulomb
-// (frozen slip direction) cycles on this mesh and is not tested yet (docs/contact.md).
+// 3D cases: a separate, serial executable (contact_hertz3d) — much more expensive (about 4 min:
+// 3D Coulomb takes 44 fixed-point steps in the slip direction, docs/contact.md).
 TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
 {
   // Sphere (Johnson 1985): a³ = 3PR/(4E*), p0 = 3P/(2πa²), with P the computed resultant.
@@ -279,4 +279,31 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
   TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, 0.25 * p0);
 }
 
+TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
+{
+  HertzCase h;
+  h.dim = 3;
+  h.E = 2.5;
+  h.nu = 0.25;
+  h.displacement = 0.025;
+  h.meshSize = 0.25;
+  h.localRefinements = 3;
+  h.refineRadius = 0.2;
+  h.law = sc::core::FrictionLaw::Coulomb;
+  h.mu = 0.4;
+  const auto r = solveHertz(h);
+  out << "3D Coulomb: radius " << r.summary.zoneSize << ", stick radius " << r.summary.stickZoneSize
+      << ", stick/slip " << r.summary.numStick << "/" << r.summary.numSlip << ", Newton steps "
+      << r.stats.newtonIterations << "\n";
+  TEST_ASSERT(r.stats.converged);
+  TEST_COMPARE(r.summary.numStick, >, 0);
+  // The friction disc holds at every point, with equality on slip points (the last step's
+  // directions moved by < 1e-6, so equality holds to about that).
+  for (const auto& p : r.points) {
+    const double t = std::hypot(p.sigmaT[0], p.sigmaT[1]), bound = h.mu * std::abs(p.sigmaN);
+    TEST_COMPARE(t, <=, bound * (1 + 1e-6) + 1e-12);
+    if (p.status == sc::contact::PointStatus::Slip)
+      TEST_COMPARE(std::abs(t - bound), <=, 1e-6 * bound + 1e-12);
+  }
+}
 #endif  // SC_HERTZ_3D

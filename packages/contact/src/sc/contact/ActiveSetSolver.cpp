@@ -232,8 +232,10 @@ int ActiveSetSolver::updateState(bool flipToStick)
       status = PointStatus::Stick;
       xi = {0.0, 0.0};
     }
+    // 2D: ξ = ±1, any flip is a change. 3D: the frozen-direction fixed point converges
+    // linearly; a direction that moved by less than 1e-6 counts as settled.
     double dxi = std::abs(xi[0] - p.direction[0]) + std::abs(xi[1] - p.direction[1]);
-    if (status != p.status || (status == PointStatus::Slip && dxi > 1e-9))
+    if (status != p.status || (status == PointStatus::Slip && dxi > (nt == 1 ? 1e-9 : 1e-6)))
       ++changes;
     p.status = status;
     p.direction = xi;
@@ -345,11 +347,16 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   MultiVector y(b.getMap(), 1), scaledRhs(b.getMap(), 1);
   stats_ = ContactStatistics();
   MultiVector rhs(b.getMap(), 1);
-  std::vector<std::vector<int>> history;  // local state signature per iteration
+  std::vector<std::vector<long long>> history;  // local state signature per iteration
+  // A state: statuses and slip directions (in 3D quantised at the settling tolerance, so that a
+  // still-moving direction is not mistaken for a repeated state).
   auto signature = [&]() {
-    std::vector<int> s;
-    for (const auto& p : points_)
-      s.push_back(static_cast<int>(p.status) * 4 + (p.direction[0] > 0) * 2 + (p.direction[1] > 0));
+    std::vector<long long> s;
+    for (const auto& p : points_) {
+      s.push_back(static_cast<int>(p.status));
+      for (double xi : p.direction)
+        s.push_back(std::llround(xi * 1e6));
+    }
     return s;
   };
   history.push_back(signature());
