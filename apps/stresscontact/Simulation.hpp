@@ -4,8 +4,8 @@
 //
 // What each cycle does depends on what the scene needs (DESIGN §1): no contact machinery
 // without a Contact boundary, no friction rows when the law is None or μ_F = 0. Phases whose
-// packages do not exist yet (mixed elasticity #4, contact #5, estimator #6) are reported as
-// absent in summary.json ("phases_missing"), never faked.
+// packages do not exist yet (the estimator, #6) are reported as absent in summary.json
+// ("phases_missing"), never faked.
 #include <memory>
 #include <string>
 #include <vector>
