@@ -250,9 +250,10 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
 #ifdef SC_HERTZ_3D
 // 3D cases: a separate, serial executable (contact_hertz3d) — much more expensive (about 4 min:
 // 3D Coulomb takes 44 fixed-point steps in the slip direction, docs/contact.md).
-TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
+namespace {
+// Hertz 3D of DESIGN §9 (half ball, E = 2.5, ν = 0.25, u_D = −0.025) on the test mesh.
+HertzCase hertz3DScene()
 {
-  // Sphere (Johnson 1985): a³ = 3PR/(4E*), p0 = 3P/(2πa²), with P the computed resultant.
   HertzCase h;
   h.dim = 3;
   h.E = 2.5;
@@ -261,6 +262,14 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
   h.meshSize = 0.25;
   h.localRefinements = 3;
   h.refineRadius = 0.2;
+  return h;
+}
+}  // namespace
+
+TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
+{
+  // Sphere (Johnson 1985): a³ = 3PR/(4E*), p0 = 3P/(2πa²), with P the computed resultant.
+  HertzCase h = hertz3DScene();
   const auto r = solveHertz(h);
   const double P = r.summary.force[2];
   const double Estar = h.E / (1 - h.nu * h.nu);
@@ -281,14 +290,7 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
 
 TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
 {
-  HertzCase h;
-  h.dim = 3;
-  h.E = 2.5;
-  h.nu = 0.25;
-  h.displacement = 0.025;
-  h.meshSize = 0.25;
-  h.localRefinements = 3;
-  h.refineRadius = 0.2;
+  HertzCase h = hertz3DScene();
   h.law = sc::core::FrictionLaw::Coulomb;
   h.mu = 0.4;
   const auto r = solveHertz(h);
