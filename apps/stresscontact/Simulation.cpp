@@ -56,7 +56,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                   << " needs error indicators, and this build has no estimator yet (issue #6). "
                   << "Valid now: 'Uniform', or Cycles = 0.");
 
-  exact_ = core::createExactSolution(problem_.exactSolution, dim, material_);
+  exact_ = core::createExactSolution(problem_.exactSolution, dim, material_,
+                                     problem_.manufacturedWavenumber);
   for (const auto& bc : boundaryConditions_.conditions)
     SC_THROW_IF(bc.fromExactSolution && !exact_, core::InputError,
                 "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution' needs "

@@ -38,7 +38,11 @@ struct VerificationSetup {
   double nu = 0.3;
   double E = 1.0;
   std::string exact = "Manufactured smooth";
+  double wavenumber = M_PI;  ///< ω of the manufactured solution
   std::string solver = "KLU2";
+  /// false: level l is the previous level refined uniformly (bisection); true: level l is a new
+  /// Gmsh mesh of size meshSize / 2^l (same element quality on every level).
+  bool remesh = false;
 };
 
 /// Boundary data: displacement from the exact solution on Left/Bottom(/Front), traction on the rest.
@@ -65,15 +69,19 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   meshList.set("Uniform refinements", s.initialRefinements);
   auto refiner = mesh::MeshFactory::build(meshList, s.dim);
   core::Material material{s.E, s.nu};
-  auto exact = core::createExactSolution(s.exact, s.dim, material);
+  auto exact = core::createExactSolution(s.exact, s.dim, material, s.wavenumber);
   Teuchos::ParameterList solverList;
   solverList.set("Type", s.solver);
   auto solver = solvers::createDirectSolver(solverList);
   solver->setSymmetric(true);
   std::vector<LevelResult> results;
   for (int level = 0; level < s.levels; ++level) {
-    if (level > 0)
+    if (level > 0 && s.remesh) {
+      meshList.set("Initial mesh size", s.meshSize / std::pow(2.0, level));
+      refiner = mesh::MeshFactory::build(meshList, s.dim);
+    } else if (level > 0) {
       refiner->refineUniformly();
+    }
     auto m = refiner->mesh();
     auto owner = mesh::partitionElements(*m, *comm);
     auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank()));

@@ -34,9 +34,11 @@ void ExactSolution::traction(const double* x, const double* n, double* t) const
 }
 
 // ------------------------------------------------------------------ smooth manufactured solution
-SmoothManufacturedSolution::SmoothManufacturedSolution(int dim, const Material& m)
-  : dim_(dim), mu_(m.shearModulus())
+SmoothManufacturedSolution::SmoothManufacturedSolution(int dim, const Material& m, double wavenumber)
+  : dim_(dim), omega_(wavenumber), mu_(m.shearModulus())
 {
+  SC_THROW_IF(!(wavenumber > 0.0), InputError,
+              "'Problem/Manufactured wavenumber' must be > 0 (got " << wavenumber << ").");
   SC_THROW_IF(m.poissonRatio <= 0.0, InputError,
               "the manufactured solution u = u0 + (1/λ)∇φ needs λ > 0, i.e. 'Material/Poisson "
               "ratio' > 0 (got " << m.poissonRatio << ").");
@@ -46,7 +48,7 @@ SmoothManufacturedSolution::SmoothManufacturedSolution(int dim, const Material& 
 
 void SmoothManufacturedSolution::u0AndGradient(const double* x, double* u0, double* g) const
 {
-  const double p = M_PI;
+  const double p = omega_;
   const double sx = std::sin(p * x[0]), cx = std::cos(p * x[0]);
   const double sy = std::sin(p * x[1]), cy = std::cos(p * x[1]);
   if (dim_ == 2) {
@@ -75,13 +77,13 @@ void SmoothManufacturedSolution::u0AndGradient(const double* x, double* u0, doub
 void SmoothManufacturedSolution::phiDerivatives(const double* x, double* grad, double* hess) const
 {
   const int d = dim_;
-  const double p = M_PI;
+  const double p = omega_;
   double s[3], c[3];
   for (int i = 0; i < d; ++i) {
     s[i] = std::sin(p * x[i]);
     c[i] = std::cos(p * x[i]);
   }
-  // φ = Π sin(π x_i): ∂_i φ = π c_i Π_{j≠i} s_j, ∂_i∂_i φ = −π² φ, ∂_i∂_j φ = π² c_i c_j Π_{k≠i,j} s_k.
+  // φ = Π sin(ω x_i): ∂_i φ = ω c_i Π_{j≠i} s_j, ∂_i∂_i φ = −ω² φ, ∂_i∂_j φ = ω² c_i c_j Π_{k≠i,j} s_k.
   for (int i = 0; i < d; ++i) {
     grad[i] = p * c[i];
     for (int j = 0; j < d; ++j) {
@@ -139,9 +141,9 @@ void SmoothManufacturedSolution::rotation(const double* x, double* theta) const
 
 void SmoothManufacturedSolution::bodyForce(const double* x, double* f) const
 {
-  // div σ = μ Δu0 + (2μ/λ + 1) ∇Δφ with Δu0 = −dπ² u0 and ∇Δφ = −dπ² ∇φ (docs of the class).
+  // div σ = μ Δu0 + (2μ/λ + 1) ∇Δφ with Δu0 = −dω² u0 and ∇Δφ = −dω² ∇φ (docs of the class).
   const int d = dim_;
-  const double k = d * M_PI * M_PI;
+  const double k = d * omega_ * omega_;
   double u0[3], g[9], gp[3], hp[9];
   u0AndGradient(x, u0, g);
   phiDerivatives(x, gp, hp);
@@ -237,10 +239,10 @@ void LinearPatchSolution::bodyForce(const double*, double* f) const
 }
 
 std::unique_ptr<ExactSolution> createExactSolution(const std::string& name, int dim,
-                                                   const Material& material)
+                                                   const Material& material, double wavenumber)
 {
   if (name == "Manufactured smooth")
-    return std::make_unique<SmoothManufacturedSolution>(dim, material);
+    return std::make_unique<SmoothManufacturedSolution>(dim, material, wavenumber);
   if (name == "Linear patch")
     return std::make_unique<LinearPatchSolution>(dim, material);
   SC_THROW_IF(name != "None", InputError,

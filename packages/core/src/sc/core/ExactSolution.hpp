@@ -3,14 +3,16 @@
 // f, u_D, t they induce. Points are given as x[0..d-1]; tensors row-major d×d.
 //
 // SmoothManufacturedSolution is robust in the incompressible limit (DESIGN §1, issue #4):
-//   u = u0 + (1/λ) ∇φ,  div u0 = 0,  φ = Π sin(π x_i),
-//   2D: u0 = curl(sin πx sin πy);  3D: u0 = (π sx cy sz, −π cx sy sz, 0),
+//   u = u0 + (1/λ) ∇φ,  div u0 = 0,  φ = Π sin(ω x_i),
+//   2D: u0 = curl(sin ωx sin ωy);  3D: u0 = (ω sx cy sz, −ω cx sy sz, 0)  (s_i = sin ωx_i),
+// with wavenumber ω (default π: one half wave across the unit square/cube),
 //   σ = 2μ ε(u) + λ div(u) I = 2μ ε(u0) + (2μ/λ) ∇²φ + Δφ I,
 // so σ stays bounded as λ → ∞ and at ν = 0.5 (1/λ = 0) it is the Stokes-like limit. Since
 // ε(u) = Aσ, div σ = −f and as σ = 0 hold exactly, the errors of the mixed method measure only
 // discretisation error. 1/λ = (1 − 2ν)/(2μν): ν must be > 0.
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,7 +41,7 @@ public:
 
 class SmoothManufacturedSolution : public ExactSolution {
 public:
-  SmoothManufacturedSolution(int dim, const Material& material);
+  SmoothManufacturedSolution(int dim, const Material& material, double wavenumber = M_PI);
   int dim() const override { return dim_; }
   void stress(const double* x, double* sigma) const override;
   void displacement(const double* x, double* u) const override;
@@ -52,6 +54,7 @@ private:
   void u0AndGradient(const double* x, double* u0, double* grad) const;
   void phiDerivatives(const double* x, double* gradPhi, double* hessPhi) const;
   int dim_;
+  double omega_;
   double mu_, inverseLambda_;
 };
 
@@ -75,7 +78,9 @@ private:
 };
 
 /// "Problem/Exact solution": None | Manufactured smooth | Linear patch.
+/// `wavenumber` is ω of the manufactured solution ("Problem/Manufactured wavenumber").
 std::unique_ptr<ExactSolution> createExactSolution(const std::string& name, int dim,
-                                                   const Material& material);
+                                                   const Material& material,
+                                                   double wavenumber = M_PI);
 
 }  // namespace sc::core

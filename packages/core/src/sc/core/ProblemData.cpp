@@ -34,6 +34,10 @@ Teuchos::RCP<const Teuchos::ParameterList> ProblemSettings::getValidParameters()
                   "Known solution for verification: errors are reported in summary.json, and "
                   "boundary data of Type Displacement/Traction with 'Data' = 'Exact solution' and "
                   "the body force come from it (docs/verification.md).");
+    declareReal(*pl, "Manufactured wavenumber", M_PI,
+                "Wavenumber ω of 'Manufactured smooth' (sin ωx_i): π is one half wave across the "
+                "unit square/cube; a smaller ω reaches the asymptotic rates on coarser meshes.",
+                0.0, true);
     return pl;
   }();
   return valid;
@@ -44,6 +48,7 @@ ProblemSettings ProblemSettings::fromParameters(const Teuchos::ParameterList& pl
   ProblemSettings s;
   s.dimension = pl.get<int>("Dimension");
   s.exactSolution = pl.get<std::string>("Exact solution");
+  s.manufacturedWavenumber = pl.get<double>("Manufactured wavenumber");
   return s;
 }
 

@@ -7,6 +7,7 @@
 // The method settings live here until their packages own them (estimator #6, adapt #6); the
 // "Linear Solver" sublist belongs to sc::solvers::LinearSolverFactory.
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ namespace sc::core {
 struct ProblemSettings {
   int dimension = 2;  ///< 2 (plane strain) or 3
   std::string exactSolution = "None";  ///< name for createExactSolution (ExactSolution.hpp)
+  double manufacturedWavenumber = M_PI;  ///< ω of the smooth manufactured solution
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static ProblemSettings fromParameters(const Teuchos::ParameterList& problemList);
 };
