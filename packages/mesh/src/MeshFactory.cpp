@@ -45,6 +45,24 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
                                "Lower-left corner of the Rectangle", {2});
     sc::core::declareRealArray(*p, "Upper corner", Teuchos::Array<double>(2, 1.0),
                                "Upper-right corner of the Rectangle", {2});
+    Teuchos::ParameterList& local = p->sublist(
+        "Local refinement", false,
+        "Bisection sweeps towards a region, after the uniform refinements (e.g. a contact zone)");
+    sc::core::declareInt(local, "Levels", 0,
+                         "Number of sweeps; each bisects every selected element once (3 sweeps "
+                         "halve h in 3D, 2 in 2D); 0 = off",
+                         0, 40);
+    sc::core::declareRealArray(local, "Center", Teuchos::Array<double>(),
+                               "Centre of the region (Problem/Dimension values; needed when "
+                               "Levels > 0)",
+                               {0, 2, 3});
+    sc::core::declareReal(local, "Radius", 0.25,
+                          "Elements whose centroid lies within this distance of Center are "
+                          "selected",
+                          0.0, true);
+    sc::core::declareString(local, "Boundary", "",
+                            "If set: select only elements with a face on this boundary part "
+                            "whose centroid is within Radius (refines along a surface, e.g. Cap)");
     valid = p;
   }
   return valid;
@@ -138,6 +156,7 @@ Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
   if (split) initial = splitElementsWithAllVerticesOnBoundary(*initial);
   auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
   for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
+  MeshFactory::refineLocally(*refiner, p.sublist("Local refinement"));
   return refiner;
 }
 
@@ -185,6 +204,46 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   auto mesh = Teuchos::rcp(new SimplexMesh(dimension, std::move(coords), std::move(elems), bfv,
                                            bpart, nameList, origin));
   return finish(p, mesh, geometry, splitBoundarySimplices);
+}
+
+void MeshFactory::refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& list)
+{
+  Teuchos::ParameterList local(list);  // get() with defaults: missing keys mean the defaults
+  const int levels = local.get<int>("Levels", 0);
+  if (levels == 0) return;
+  const int d = refiner.mesh()->dim();
+  const auto center = local.get<Teuchos::Array<double>>("Center", Teuchos::Array<double>());
+  SC_THROW_IF(static_cast<int>(center.size()) != d, sc::core::InputError,
+              "'Mesh/Local refinement/Center' needs " << d << " values (the problem dimension) "
+              "when 'Mesh/Local refinement/Levels' = " << levels << " > 0; got "
+              << center.size() << ".");
+  const double radius = local.get<double>("Radius", 0.25);
+  const std::string boundary = local.get<std::string>("Boundary", "");
+  // boundaryId() throws an InputError listing the valid part names.
+  const int part = boundary.empty() ? -1 : refiner.mesh()->boundaryId(boundary);
+  auto within = [&](const SimplexMesh& m, const int* verts, int n) {
+    double r2 = 0.0;
+    for (int j = 0; j < d; ++j) {
+      double c = 0.0;
+      for (int i = 0; i < n; ++i) c += m.vertex(verts[i])[j] / n;
+      r2 += (c - center[j]) * (c - center[j]);
+    }
+    return r2 < radius * radius;
+  };
+  for (int level = 0; level < levels; ++level) {
+    const auto m = refiner.mesh();
+    std::vector<int> marked;
+    if (part < 0) {
+      for (int e = 0; e < m->numElements(); ++e)
+        if (within(*m, m->elementVertices(e), d + 1)) marked.push_back(e);
+    } else {
+      for (int f : m->boundaryFaces())
+        if (m->faceBoundaryId(f) == part && within(*m, m->faceVertices(f), d))
+          marked.push_back(m->faceElements(f)[0]);
+    }
+    if (marked.empty()) break;  // the region holds no element (or face) centroid any more
+    refiner.refine(marked);
+  }
 }
 
 Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,

@@ -32,7 +32,8 @@ TEUCHOS_UNIT_TEST(MeshFactory, ValidParametersHaveDefaultsAndDocs)
     TEST_ASSERT(valid->isParameter(key));
     if (valid->isParameter(key)) TEST_ASSERT(!valid->getEntry(key).docString().empty());
   }
-  TEST_EQUALITY(valid->numParams(), 8);
+  TEST_ASSERT(valid->isSublist("Local refinement"));
+  TEST_EQUALITY(valid->numParams(), 9);
   TEST_EQUALITY(valid->get<std::string>("Source"), std::string("Half disc"));
   TEST_EQUALITY(valid->get<bool>("Project boundary"), true);
 }
@@ -120,6 +121,86 @@ TEUCHOS_UNIT_TEST(MeshFactory, HalfDiscRadius)
       const double* x = m->vertex(m->faceVertices(f)[i]);
       TEST_FLOATING_EQUALITY(std::hypot(x[0], x[1] - 1), 0.5, 1e-13);
     }
+}
+
+// Local refinement: generations count the bisections since the initial mesh (each halves the
+// element's measure), so the expected numbers are exact counts, not tolerances.
+namespace {
+double centroidDistance(const SimplexMesh& m, const int* v, int n, double cx, double cy)
+{
+  double x = 0, y = 0;
+  for (int i = 0; i < n; ++i) {
+    x += m.vertex(v[i])[0] / n;
+    y += m.vertex(v[i])[1] / n;
+  }
+  return std::hypot(x - cx, y - cy);
+}
+}  // namespace
+
+TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAroundAPoint)
+{
+  Teuchos::ParameterList p;
+  p.set("Initial mesh size", 0.1);
+  auto& local = p.sublist("Local refinement");
+  local.set("Levels", 4);
+  local.set("Center", Teuchos::Array<double>(2, 0.0));
+  local.set("Radius", 0.2);
+  auto refiner = MeshFactory::build(p, 2);
+  const auto m = refiner->mesh();
+  int near = 0, far = 0;
+  for (int e = 0; e < m->numElements(); ++e) {
+    const double r = centroidDistance(*m, m->elementVertices(e), 3, 0.0, 0.0);
+    if (r < 0.05) {  // inside the region at every sweep: bisected by each one
+      TEST_COMPARE(refiner->generation(e), >=, 4);
+      ++near;
+    } else if (r > 0.6) {  // far outside: the closure does not reach it
+      TEST_EQUALITY(refiner->generation(e), 0);
+      ++far;
+    }
+  }
+  TEST_COMPARE(near, >, 0);
+  TEST_COMPARE(far, >, 0);
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAlongABoundary)
+{
+  Teuchos::ParameterList p;
+  p.set("Initial mesh size", 0.1);
+  auto& local = p.sublist("Local refinement");
+  local.set("Levels", 4);
+  local.set("Center", Teuchos::Array<double>(2, 0.0));
+  local.set("Radius", 0.2);
+  local.set("Boundary", std::string("Arc"));
+  auto refiner = MeshFactory::build(p, 2);
+  const auto m = refiner->mesh();
+  int onArc = 0, maxInterior = 0;
+  for (int f : m->boundaryFacesOf("Arc"))
+    if (centroidDistance(*m, m->faceVertices(f), 2, 0.0, 0.0) < 0.1) {
+      TEST_COMPARE(refiner->generation(m->faceElements(f)[0]), >=, 4);
+      ++onArc;
+    }
+  // Elements away from the arc (the point (0, 0.17) is 0.17 inside) are refined less.
+  for (int e = 0; e < m->numElements(); ++e)
+    if (centroidDistance(*m, m->elementVertices(e), 3, 0.0, 0.17) < 0.03)
+      maxInterior = std::max(maxInterior, refiner->generation(e));
+  TEST_COMPARE(onArc, >, 0);
+  TEST_COMPARE(maxInterior, <, 4);
+}
+
+TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementErrorsNameTheKey)
+{
+  Teuchos::ParameterList p;
+  p.set("Initial mesh size", 0.2);
+  p.sublist("Local refinement").set("Levels", 2);
+  // No Center: named, with the number of values needed.
+  auto msg = errorOf([&] { MeshFactory::build(p, 2); });
+  TEST_ASSERT(contains(msg, "Local refinement/Center"));
+  TEST_ASSERT(contains(msg, "2 values"));
+  p.sublist("Local refinement").set("Center", Teuchos::Array<double>(2, 0.0));
+  p.sublist("Local refinement").set("Boundary", std::string("Rim"));
+  msg = errorOf([&] { MeshFactory::build(p, 2); });
+  TEST_ASSERT(contains(msg, "Rim"));
+  TEST_ASSERT(contains(msg, "Arc"));  // the valid part names
 }
 
 TEUCHOS_UNIT_TEST(MeshFactory, GmshFileSource)

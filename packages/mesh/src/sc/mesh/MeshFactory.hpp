@@ -1,6 +1,7 @@
 #pragma once
 // Builds the mesh of a run from the "Mesh" sublist (docs/mesh.md): scene geometry or Gmsh file,
-// initial Gmsh mesh, uniform refinements, and the BisectionRefiner that the adaptive loop keeps.
+// initial Gmsh mesh, uniform and local refinements, and the BisectionRefiner that the adaptive
+// loop keeps.
 
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/Geometry.hpp>
@@ -17,7 +18,8 @@ namespace sc::mesh {
 class MeshFactory {
 public:
   /// Valid "Mesh" sublist: Source, Initial mesh size, Uniform refinements, Project boundary,
-  /// Radius, File, Lower corner, Upper corner (each with default, doc string and validator).
+  /// Radius, File, Lower corner, Upper corner, and the "Local refinement" sublist (each with
+  /// default, doc string and validator).
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
 
   /// Values of Mesh/Source.
@@ -37,6 +39,12 @@ public:
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
                                               int dimension, const Teuchos::Comm<int>& comm,
                                               bool splitBoundarySimplices = false);
+
+  /// Apply a validated "Mesh/Local refinement" sublist (Levels, Center, Radius, Boundary):
+  /// `Levels` sweeps, each bisecting (with conforming closure) every element whose centroid —
+  /// or, with `Boundary`, whose face on that part — lies within `Radius` of `Center`. The
+  /// closure grades the mesh away from the region. build() calls it after the uniform levels.
+  static void refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& local);
 
   /// The scene geometry of a validated list (null for "Gmsh file").
   static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,
