@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 #include <numeric>
+#include <iomanip>
 #include <sstream>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -153,6 +154,12 @@ void Simulation::solveContact(int cycle)
         *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
         params_->sublist("Contact").sublist("Newton"), comm_);
     contactSolver_->setInitialState(previousPoints_);
+    contactSolver_->setStepCallback([this](int step, long long changes, double seconds) {
+      std::ostringstream os;
+      os << "Newton step " << step << ": " << changes << " points changed state ("
+         << std::fixed << std::setprecision(1) << seconds << " s)";
+      progress_.report("contact", os.str());
+    });
   }
   progress_.report("contact", std::to_string(contactSolver_->globalNumPoints()) + " contact points, " +
                                   (contactSolver_->hasFriction() ? "with" : "without") + " friction");

@@ -1,6 +1,7 @@
 #include "sc/contact/ActiveSetSolver.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -363,6 +364,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   // Contact rows make the system non-symmetric.
   solver.setSymmetric(false);
   for (int it = 1; it <= maxIterations_; ++it) {
+    const auto stepStart = std::chrono::steady_clock::now();
     auto A = modifiedMatrix(K, rhs, b);
     if (D.is_null()) {
       // Same graph every step: the solver keeps its symbolic analysis and refactorises.
@@ -380,6 +382,9 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
     evaluate(K, b, x);
     const int changes = updateState(false);
     stats_.changesPerIteration.push_back(changes);
+    if (stepCallback_)
+      stepCallback_(it, changes,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count());
     if (changes == 0) {
       stats_.converged = true;
       return;

@@ -17,6 +17,7 @@
 // the solver stops with a ConvergenceError. Rows replaced keep the matrix graph, so the direct
 // solver's symbolic factorisation is reused across Newton steps.
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -91,6 +92,12 @@ public:
   void solve(const CrsMatrix& K, const MultiVector& b, solvers::DirectSolver& solver,
              MultiVector& x, const MultiVector* scaling = nullptr);
 
+  /// Called after every Newton step on every rank (collective data only): the step number,
+  /// the global number of points whose state changed, and the step's wall time in seconds.
+  /// Simulation uses it for progress output on long 3D runs.
+  using StepCallback = std::function<void(int step, long long changes, double seconds)>;
+  void setStepCallback(StepCallback callback) { stepCallback_ = std::move(callback); }
+
   const std::vector<ContactPoint>& points() const { return points_; }
   const ContactStatistics& statistics() const { return stats_; }
   long long globalNumPoints() const;
@@ -110,6 +117,7 @@ private:
   int maxIterations_, maxRemedies_;
   double penaltyFactor_;
   ContactStatistics stats_;
+  StepCallback stepCallback_;
 };
 
 }  // namespace sc::contact
