@@ -1,9 +1,13 @@
 // Hertz contact (issue #5 acceptance; DESIGN §3, §9), at 1, 2 and 4 ranks. References:
 // plane-strain Hertz (Johnson 1985): E* = E/(1−ν²), a = √(4PR/(πE*)), p0 = 2P/(πa),
 // p(x) = p0 √(1 − x²/a²), with P the computed resultant (the half disc is finite).
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 
@@ -50,20 +54,13 @@ HertzResult solveHertz(const HertzCase& h)
   meshList.set("Source", h.source.empty() ? std::string(d == 2 ? "Half disc" : "Half ball") : h.source);
   meshList.set("Initial mesh size", h.meshSize);
   auto refiner = sc::mesh::MeshFactory::build(meshList, d, *comm);
-  for (int r = 0; r < h.localRefinements; ++r) {
-    auto m = refiner->mesh();
-    std::vector<int> marked;
-    for (int e = 0; e < m->numElements(); ++e) {
-      double c[3] = {0, 0, 0};
-      for (int i = 0; i <= d; ++i)
-        for (int j = 0; j < d; ++j)
-          c[j] += m->vertex(m->elementVertices(e)[i])[j] / (d + 1);
-      c[1] -= h.refineCenterY;
-      if (std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < h.refineRadius)
-        marked.push_back(e);
-    }
-    refiner->refine(marked);
-  }
+  Teuchos::ParameterList local;
+  local.set("Levels", h.localRefinements);
+  Teuchos::Array<double> center(d, 0.0);
+  center[1] = h.refineCenterY;
+  local.set("Center", center);
+  local.set("Radius", h.refineRadius);
+  sc::mesh::MeshFactory::refineLocally(*refiner, local);
   auto m = refiner->mesh();
   auto owner = sc::mesh::partitionElements(*m, *comm);
   auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, 1, owner, comm->getRank()));
@@ -109,29 +106,101 @@ double hertzHalfWidth(double P, double E, double nu)
 }  // namespace
 
 #ifndef SC_HERTZ_3D
-TEUCHOS_UNIT_TEST(Hertz, Frictionless2D)
+namespace {
+
+// (x, σ_N) of all active points on all ranks, sorted by x (the zone is a line in 2D).
+std::vector<std::array<double, 2>> gatherActiveProfile(const std::vector<sc::contact::ContactPoint>& local)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  std::vector<double> mine;
+  for (const auto& p : local)
+    if (p.status != sc::contact::PointStatus::Free) {
+      mine.push_back(p.x[0]);
+      mine.push_back(p.sigmaN);
+    }
+  const int n = comm->getSize(), rank = comm->getRank();
+  std::vector<int> counts(n, 0), all(n, 0);
+  counts[rank] = static_cast<int>(mine.size());
+  Teuchos::reduceAll<int, int>(*comm, Teuchos::REDUCE_SUM, n, counts.data(), all.data());
+  int offset = 0, total = 0;
+  for (int r = 0; r < n; ++r) {
+    if (r < rank) offset += all[r];
+    total += all[r];
+  }
+  std::vector<double> buffer(total, 0.0), gathered(total, 0.0);
+  std::copy(mine.begin(), mine.end(), buffer.begin() + offset);
+  if (total > 0)
+    Teuchos::reduceAll<int, double>(*comm, Teuchos::REDUCE_SUM, total, buffer.data(), gathered.data());
+  std::vector<std::array<double, 2>> profile;
+  for (int i = 0; i + 1 < total; i += 2)
+    profile.push_back({gathered[i], gathered[i + 1]});
+  std::sort(profile.begin(), profile.end());
+  return profile;
+}
+
+struct FrictionlessHertz2D {
+  double P, a, p0, profileError, zigzag;
+};
+
+// Frictionless Hertz 2D on the mesh refined towards the zone: checks of issue #5 against the
+// plane-strain Hertz values from the computed load P (Johnson 1985): a = √(4PR/(πE*)),
+// p0 = 2P/(πa), p(x) = p0√(1 − x²/a²). Returns the numbers for cross-ν comparisons.
+FrictionlessHertz2D frictionless2D(double nu, Teuchos::FancyOStream& out, bool& success)
 {
   HertzCase h;
+  h.nu = nu;
+  // Two more sweeps than the other 2D cases in a smaller disc around the zone: the half-width is
+  // read off the point spacing (docs/contact.md), which must be well below 3% of a.
+  h.localRefinements = 8;
+  h.refineRadius = 0.12;
   const auto r = solveHertz(h);
-  const double P = r.summary.force[1];  // the foundation pushes the body up
-  const double a = hertzHalfWidth(P, h.E, h.nu), p0 = 2.0 * P / (M_PI * a);
-  out << "P = " << P << ", a = " << r.summary.zoneSize << " (Hertz " << a << "), p0 = "
-      << r.summary.maxPressure << " (Hertz " << p0 << "), Newton steps " << r.stats.newtonIterations
-      << ", centre " << r.summary.center[0] << "\n";
+  FrictionlessHertz2D f;
+  f.P = r.summary.force[1];  // the foundation pushes the body up
+  f.a = hertzHalfWidth(f.P, h.E, h.nu);
+  f.p0 = 2.0 * f.P / (M_PI * f.a);
   TEST_ASSERT(r.stats.converged);
-  TEST_COMPARE(P, >, 0.0);
-  TEST_COMPARE(std::abs(r.summary.zoneSize - a), <=, 0.03 * a);
-  TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, 0.03 * p0);
+  TEST_COMPARE(f.P, >, 0.0);
+  TEST_COMPARE(std::abs(r.summary.zoneSize - f.a), <=, 0.03 * f.a);
+  TEST_COMPARE(std::abs(r.summary.maxPressure - f.p0), <=, 0.03 * f.p0);
   // Symmetry about x = 0: no horizontal resultant, zone centred.
-  TEST_COMPARE(std::abs(r.summary.force[0]), <=, 1e-3 * P);
-  TEST_COMPARE(std::abs(r.summary.center[0]), <=, 0.01 * a);
-  // Profile in the inner 80% of the zone.
-  double worst = 0.0;
-  for (const auto& p : r.points)
-    if (std::abs(p.x[0]) < 0.8 * a)
-      worst = std::max(worst, std::abs(-p.sigmaN - p0 * std::sqrt(1.0 - p.x[0] * p.x[0] / (a * a))));
-  out << "worst profile deviation " << worst / p0 * 100 << "% of p0\n";
-  TEST_COMPARE(worst, <=, 0.05 * p0);
+  TEST_COMPARE(std::abs(r.summary.force[0]), <=, 1e-3 * f.P);
+  TEST_COMPARE(std::abs(r.summary.center[0]), <=, 0.01 * f.a);
+  // Profile in the inner 80% of the zone, and its point-to-point oscillation there: the
+  // deviation of each σ_N from the mean of its two neighbours (the Hertz curve itself bends by
+  // < 0.1% of p0 over three points at this spacing, so this measures zigzag, not curvature).
+  const auto profile = gatherActiveProfile(r.points);
+  f.profileError = f.zigzag = 0.0;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    const double x = profile[i][0];
+    if (std::abs(x) >= 0.8 * f.a) continue;
+    f.profileError = std::max(f.profileError,
+                              std::abs(-profile[i][1] - f.p0 * std::sqrt(1.0 - x * x / (f.a * f.a))));
+    if (i > 0 && i + 1 < profile.size())
+      f.zigzag = std::max(f.zigzag,
+                          std::abs(profile[i][1] - 0.5 * (profile[i - 1][1] + profile[i + 1][1])));
+  }
+  out << "nu = " << std::setprecision(6) << nu << std::setprecision(3) << ": P = " << f.P << ", a = " << r.summary.zoneSize << " (Hertz " << f.a
+      << "), p0 = " << r.summary.maxPressure << " (Hertz " << f.p0 << "), Newton steps "
+      << r.stats.newtonIterations << ", centre " << r.summary.center[0] << ", profile error "
+      << f.profileError / f.p0 * 100 << "% of p0, zigzag " << f.zigzag / f.p0 * 100 << "% of p0 ("
+      << profile.size() << " active points)\n";
+  TEST_COMPARE(f.profileError, <=, 0.05 * f.p0);
+  return f;
+}
+
+}  // namespace
+
+// ν = 0.28 (DESIGN §9) and the incompressible limit (issue #5: "converges, no locking or
+// oscillation in σ_N"): ν = 0.4999 and 0.5 meet the same Hertz checks (E* = E/(1−ν²) stays
+// finite), and the point-to-point zigzag of σ_N grows by at most half over ν = 0.28 plus 0.2% of
+// p0 (a locking discretisation shows a checkerboard pressure here).
+TEUCHOS_UNIT_TEST(Hertz, Frictionless2D)
+{
+  const auto reference = frictionless2D(0.28, out, success);
+  for (double nu : {0.4999, 0.5}) {
+    const auto f = frictionless2D(nu, out, success);
+    TEST_COMPARE(f.zigzag / f.p0, <=, 1.5 * reference.zigzag / reference.p0 + 0.002);
+  }
 }
 
 TEUCHOS_UNIT_TEST(Hertz, Coulomb2D)
