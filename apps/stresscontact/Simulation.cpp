@@ -225,15 +225,19 @@ void Simulation::recordCycle(int cycle)
                     {d == 2 ? "half_width" : "radius", cs.zoneSize},
                     {"max_pressure", cs.maxPressure},
                     {d == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
+                    {d == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
+                    {d == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
+                     cs.equivalentStickZoneSize},
                     {"points", {{"free", cs.numFree}, {"stick", cs.numStick}, {"slip", cs.numSlip}}},
                     {"newton_iterations", st.newtonIterations},
-                    {"cycle_remedies", st.remedies}};
+                    {"cycle_remedies", st.remedies},
+                    {"fixed_point_iterations", st.fixedPointIterations}};
     c["nonlinear_iterations"] = st.newtonIterations;
     std::ostringstream os;
     os << "force (" << force[0] << ", " << force[1] << (d == 3 ? ", " + std::to_string(force[2]) : "")
-       << "), " << (d == 2 ? "half-width " : "radius ") << cs.zoneSize << ", max pressure "
-       << cs.maxPressure << ", stick " << cs.stickZoneSize << " (" << cs.numStick << " stick, "
-       << cs.numSlip << " slip points)";
+       << "), " << (d == 2 ? "half-width " : "radius ") << cs.zoneSize << " (from the area "
+       << cs.equivalentZoneSize << "), max pressure " << cs.maxPressure << ", stick "
+       << cs.stickZoneSize << " (" << cs.numStick << " stick, " << cs.numSlip << " slip points)";
     progress_.report("contact", os.str());
   }
   if (solved_) {

@@ -37,6 +37,7 @@ struct HertzCase {
   int localRefinements = 6;  ///< bisection sweeps of the elements near the contact zone
   double refineRadius = 0.25;
   std::string solver = "MUMPS";
+  std::string coulombMethod;  ///< Contact/Newton/Coulomb method (empty: the default)
 };
 
 struct HertzResult {
@@ -82,6 +83,7 @@ HertzResult solveHertz(const HertzCase& h)
   cs.frictionLaw = h.law;
   cs.frictionCoefficient = h.mu;
   Teuchos::ParameterList newton;
+  if (!h.coulombMethod.empty()) newton.set("Coulomb method", h.coulombMethod);
   sc::contact::ActiveSetSolver contact(*space, cs, material, {contactName}, newton, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", h.solver);
@@ -257,6 +259,36 @@ TEUCHOS_UNIT_TEST(Hertz, ZeroFrictionEqualsFrictionless)
   b.mu = 0.0;
   const auto ra = solveHertz(a), rb = solveHertz(b);
   TEST_COMPARE(relativeDifference(rb.x, ra.x, 1.0), <=, 1e-12);
+}
+
+// The Coulomb fixed point (Tresca problems with s = μ|σ_N| of the last outer step, the fallback of
+// DESIGN §3) converges to the semismooth Newton solution: same stick/slip sets, tractions equal
+// to 1e-6 of p0 (fixed-point tolerance 1e-8 on s), and it takes more linear solves.
+TEUCHOS_UNIT_TEST(Hertz, CoulombFixedPointMatchesNewton)
+{
+  HertzCase a = coarseHertz();
+  a.law = sc::core::FrictionLaw::Coulomb;
+  a.mu = 0.4;
+  a.coulombMethod = "Newton";
+  HertzCase b = a;
+  b.coulombMethod = "Fixed point";
+  const auto ra = solveHertz(a), rb = solveHertz(b);
+  TEST_ASSERT(ra.stats.converged && rb.stats.converged);
+  TEST_EQUALITY(ra.stats.fixedPointIterations, 0);
+  TEST_COMPARE(rb.stats.fixedPointIterations, >=, 2);
+  out << "Newton steps " << ra.stats.newtonIterations << "; fixed point: " << rb.stats.fixedPointIterations
+      << " outer steps, " << rb.stats.newtonIterations << " linear solves\n";
+  TEST_EQUALITY(ra.summary.numStick, rb.summary.numStick);
+  TEST_EQUALITY(ra.summary.numSlip, rb.summary.numSlip);
+  const double p0 = ra.summary.maxPressure;
+  TEST_EQUALITY(ra.points.size(), rb.points.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(ra.points.size(), rb.points.size()); ++i) {
+    worst = std::max(worst, std::abs(ra.points[i].sigmaN - rb.points[i].sigmaN));
+    worst = std::max(worst, std::abs(ra.points[i].sigmaT[0] - rb.points[i].sigmaT[0]));
+  }
+  out << "max traction difference " << worst / p0 << " of p0\n";
+  TEST_COMPARE(worst, <=, 1e-6 * p0);
 }
 
 TEUCHOS_UNIT_TEST(Hertz, LargeFrictionSticks)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -45,6 +46,21 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
                      "Cycle remedies (points whose slip direction flipped move to stick) before "
                      "the solver stops with an error.",
                      0, 1000);
+    core::declareChoice(*pl, "3D slip linearisation", "Hueber-Stadler-Wohlmuth",
+                        {"Hueber-Stadler-Wohlmuth", "Frozen direction"},
+                        "3D Coulomb slip rows: the Newton linearisation of the friction disc "
+                        "(Hueber, Stadler, Wohlmuth 2008), or the slip direction of the last step "
+                        "frozen (a fixed point: converges linearly, many more steps).");
+    core::declareChoice(*pl, "Coulomb method", "Newton, fixed point fallback",
+                        {"Newton, fixed point fallback", "Newton", "Fixed point"},
+                        "Coulomb friction: semismooth Newton (falling back to the fixed point if it "
+                        "does not converge), Newton only (error if it does not converge), or the "
+                        "fixed point on the friction bound (a Tresca problem per outer step).");
+    core::declareInt(*pl, "Maximum fixed-point iterations", 50,
+                     "Outer steps of the Coulomb fixed point before giving up with an error.", 1, 10000);
+    core::declareReal(*pl, "Fixed-point tolerance", 1e-8,
+                      "The fixed point stops when max|Δs_p| <= tolerance × max s_p (s = μ|σ_N|).",
+                      0.0, true, 1.0, false);
     return pl;
   }();
   return valid;
@@ -64,6 +80,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   maxIterations_ = nl.get<int>("Maximum iterations");
   maxRemedies_ = nl.get<int>("Maximum remedies");
   penaltyFactor_ = nl.get<double>("Penalty factor");
+  useHsw_ = nl.get<std::string>("3D slip linearisation") == "Hueber-Stadler-Wohlmuth";
+  coulombMethod_ = nl.get<std::string>("Coulomb method");
+  maxFixedPointIterations_ = nl.get<int>("Maximum fixed-point iterations");
+  fixedPointTolerance_ = nl.get<double>("Fixed-point tolerance");
 
   const auto& m = space.mesh();
   const int d = m.dim();
@@ -199,7 +219,9 @@ int ActiveSetSolver::updateState(bool flipToStick)
 {
   const int nt = space_.dim() - 1;
   const bool friction = settings_.needsFriction();
-  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca;
+  // In the Coulomb fixed point each inner problem is Tresca with the bounds μ|σ_N| of the last
+  // outer iterate (p.trescaBound).
+  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
   int changes = 0;
   for (auto& p : points_) {
@@ -212,7 +234,7 @@ int ActiveSetSolver::updateState(bool flipToStick)
       } else {
         // Hüeber–Stadler–Wohlmuth bound: the augmented normal stress, not the old σ_N (which
         // is 0 for a newly active point).
-        const double bound = tresca ? settings_.trescaBound : mu * std::max(0.0, -aug);
+        const double bound = tresca ? trescaBound(p) : mu * std::max(0.0, -aug);
         double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]}, norm = 0.0;
         for (int k = 0; k < nt; ++k)
           norm += z[k] * z[k];
@@ -251,7 +273,7 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
 {
   const int d = space_.dim();
   const bool friction = settings_.needsFriction();
-  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca;
+  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
   auto A = Teuchos::rcp(new CrsMatrix(K, Teuchos::Copy));
   A->resumeFill();
@@ -281,6 +303,31 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
     };
     // Frame vectors per equation: row 0 normal, rows 1.. tangential.
     const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
+    // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (DESIGN §3), with
+    // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
+    // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
+    //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
+    // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
+    // been evaluated in contact yet).
+    const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
+    double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
+    bool hswRow = false;
+    if (hsw) {
+      const double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]};
+      const double zn = std::hypot(z[0], z[1]);
+      const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
+      if (zn > 0.0 && bound > 0.0) {
+        hswRow = true;
+        const double tn = std::hypot(p.sigmaT[0], p.sigmaT[1]);
+        const double shrink = tn > bound ? bound / tn : 1.0;
+        const double st[2] = {shrink * p.sigmaT[0], shrink * p.sigmaT[1]};
+        for (int j = 0; j < 2; ++j) {
+          for (int l = 0; l < 2; ++l)
+            hswM[j][l] = (st[j] * p.direction[l] - (j == l ? bound : 0.0)) / zn;
+          hswRhs[j] = st[j] - bound * p.direction[j] - mu * p.c * p.direction[j] * p.gap;
+        }
+      }
+    }
     for (int r = 0; r < d; ++r) {
       const auto& dir = *frame[r];
       std::vector<double> newVals(cols[r].size(), 0.0);
@@ -303,7 +350,7 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
           if (tresca) {
             for (int i = 0; i < d; ++i)
               coeff[i] = p.scale * dir[i];  // σ_T,k = s ξ_k
-            newRhs = settings_.trescaBound * p.direction[k];
+            newRhs = trescaBound(p) * p.direction[k];
           } else {
             for (int i = 0; i < d; ++i)
               coeff[i] = p.scale * (dir[i] + mu * p.direction[k] * p.n[i]);  // σ_T,k + μ ξ_k σ_N = 0
@@ -313,7 +360,32 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
             coeff[i] = p.scale * dir[i];  // σ_T = 0 (free or frictionless)
         }
       }
-      if (kind == KeepRow) {
+      if (r > 0 && hswRow) {
+        // Row j of the HSW system: traction part on the point's DOFs, K-row part from r_T, r_N
+        // (r = (K x − b)/s_p per frame direction), all scaled like a traction row.
+        const int j = r - 1;
+        std::array<double, 3> tractionDir{0, 0, 0}, rowDir{0, 0, 0};
+        for (int i = 0; i < d; ++i) {
+          tractionDir[i] = (1.0 + hswM[j][j]) * (j == 0 ? p.t1[i] : p.t2[i]) +
+                           hswM[j][1 - j] * (j == 0 ? p.t2[i] : p.t1[i]) +
+                           mu * p.direction[j] * p.n[i];
+          rowDir[i] = -p.c / p.scale *
+                      (hswM[j][0] * p.t1[i] + hswM[j][1] * p.t2[i] + mu * p.direction[j] * p.n[i]);
+        }
+        const double w = std::abs(entry(r, colMap.getLocalElement(p.gids[r]))) / std::abs(p.scale);
+        newRhs = hswRhs[j];
+        for (std::size_t c = 0; c < cols[r].size(); ++c) {
+          for (int i = 0; i < d; ++i) {
+            newVals[c] += rowDir[i] * entry(i, cols[r][c]);
+            if (cols[r][c] == colMap.getLocalElement(p.gids[i]))
+              newVals[c] += p.scale * tractionDir[i];
+          }
+          newVals[c] *= w;
+        }
+        for (int i = 0; i < d; ++i)
+          newRhs += rowDir[i] * bData[lid[i]];
+        newRhs *= w;
+      } else if (kind == KeepRow) {
         for (std::size_t c = 0; c < cols[r].size(); ++c)
           for (int i = 0; i < d; ++i)
             newVals[c] += dir[i] * entry(i, cols[r][c]);
@@ -338,9 +410,74 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
   return A;
 }
 
+double ActiveSetSolver::trescaBound(const ContactPoint& p) const
+{
+  return fixedPoint_ ? p.frictionBound : settings_.trescaBound;
+}
+
 void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
                             solvers::DirectSolver& solver, MultiVector& x,
                             const MultiVector* scaling)
+{
+  fixedPoint_ = false;
+  const bool coulomb = settings_.needsFriction() && settings_.frictionLaw == core::FrictionLaw::Coulomb;
+  if (!coulomb || coulombMethod_ == "Newton") {
+    solveActiveSet(K, b, solver, x, scaling);
+    return;
+  }
+  if (coulombMethod_ == "Newton, fixed point fallback") {
+    try {
+      solveActiveSet(K, b, solver, x, scaling);
+      return;
+    } catch (const core::ConvergenceError& e) {
+      // Every rank throws together (the decisions are collective): fall back on all of them.
+      if (comm_->getRank() == 0)
+        std::cout << "  contact: semismooth Newton failed (" << e.what()
+                  << "); falling back to the Coulomb fixed point" << std::endl;
+    }
+  }
+  // Coulomb as a fixed point on the friction bound (DESIGN §3 fallback): Tresca problems with
+  // s_p = μ max(0, −σ_N,p) of the previous outer iterate, until s settles.
+  const auto first = stats_;
+  int outer = 0, total = 0;
+  fixedPoint_ = true;
+  for (auto& p : points_)
+    p.frictionBound = settings_.frictionCoefficient * std::max(0.0, -p.sigmaN);
+  for (outer = 1; outer <= maxFixedPointIterations_; ++outer) {
+    solveActiveSet(K, b, solver, x, scaling);
+    total += stats_.newtonIterations;
+    double change = 0.0, size = 0.0;
+    for (auto& p : points_) {
+      const double s = settings_.frictionCoefficient * std::max(0.0, -p.sigmaN);
+      change = std::max(change, std::abs(s - p.frictionBound));
+      size = std::max(size, s);
+      p.frictionBound = s;
+    }
+    double local[2] = {change, size}, global[2];
+    Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, 2, local, global);
+    if (stepCallback_ && comm_->getRank() == 0)
+      std::cout << "  contact: fixed point " << outer << ": bound change " << global[0] / std::max(global[1], 1e-300)
+                << " (relative)" << std::endl;
+    if (global[0] <= fixedPointTolerance_ * global[1]) {
+      fixedPoint_ = false;
+      stats_.newtonIterations = total;
+      stats_.fixedPointIterations = outer;
+      stats_.remedies += first.remedies;
+      // The last inner problem's slip points satisfy |σ_T| = s = μ|σ_N| to the tolerance.
+      return;
+    }
+  }
+  fixedPoint_ = false;
+  stats_.converged = false;
+  stats_.fixedPointIterations = maxFixedPointIterations_;
+  SC_THROW_IF(true, core::ConvergenceError,
+              "the Coulomb fixed point did not settle in " << maxFixedPointIterations_
+                  << " outer steps ('Contact/Newton/Maximum fixed-point iterations').");
+}
+
+void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
+                                     solvers::DirectSolver& solver, MultiVector& x,
+                                     const MultiVector* scaling)
 {
   Teuchos::RCP<const Tpetra::Vector<>> D;
   if (scaling)

@@ -57,12 +57,14 @@ struct ContactPoint {
   PointStatus status = PointStatus::Free;
   std::array<double, 2> direction{};  ///< slip direction ξ in (t1, t2)
   double sigmaN = 0.0, rN = 0.0;
+  double frictionBound = 0.0;  ///< s_p of the Coulomb fixed point (a Tresca bound per point)
   std::array<double, 2> sigmaT{}, rT{};
 };
 
 struct ContactStatistics {
   int newtonIterations = 0;
   int remedies = 0;
+  int fixedPointIterations = 0;  ///< outer Coulomb fixed-point steps (0: Newton converged)
   bool converged = false;
   std::vector<int> changesPerIteration;
 };
@@ -73,7 +75,8 @@ public:
   using MultiVector = Tpetra::MultiVector<>;
 
   /// Valid "Contact/Newton" keys (sublist of Contact): Maximum iterations, Penalty factor,
-  /// Maximum remedies.
+  /// Maximum remedies, 3D slip linearisation, Coulomb method, Maximum fixed-point iterations,
+  /// Fixed-point tolerance.
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
 
   /// Points on the faces of `contactBoundaries` owned by this rank.
@@ -106,6 +109,9 @@ public:
 private:
   void evaluate(const CrsMatrix& K, const MultiVector& b, const MultiVector& x);
   int updateState(bool allowFlipRemedy);
+  void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::DirectSolver& solver,
+                      MultiVector& x, const MultiVector* scaling);
+  double trescaBound(const ContactPoint& p) const;
   Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs,
                                          const MultiVector& b) const;
 
@@ -116,6 +122,11 @@ private:
   std::vector<ContactPoint> points_;
   int maxIterations_, maxRemedies_;
   double penaltyFactor_;
+  bool useHsw_ = true;
+  std::string coulombMethod_;
+  int maxFixedPointIterations_ = 50;
+  double fixedPointTolerance_ = 1e-8;
+  bool fixedPoint_ = false;  ///< inside the Coulomb fixed point: Tresca rows with p.frictionBound
   ContactStatistics stats_;
   StepCallback stepCallback_;
 };

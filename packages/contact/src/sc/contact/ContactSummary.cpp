@@ -44,8 +44,8 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
                                 const Teuchos::Comm<int>& comm)
 {
   ContactSummary out;
-  // Local contributions: force, pressure, counts, centroid of active points.
-  double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // force(3), active count, centroid(3), ...
+  // Local contributions: force, pressure, counts, centroid of active points, zone areas.
+  double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // force(3), active count, centroid(3), areas(2)
   double localMax = 0.0;
   long long counts[3] = {0, 0, 0};
   for (const auto& p : points) {
@@ -59,6 +59,15 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
       local[3] += 1.0;
       for (int i = 0; i < dim; ++i)
         local[4 + i] += p.x[i];
+      // The point's share of its face: weight = ∫_F ψ_p·n with ψ_p·n = L_p (1 at p, 0 at the
+      // face's other points), projected onto the plane.
+      double cosine = 0.0;
+      for (int i = 0; i < dim; ++i)
+        cosine += p.n[i] * obstacleNormal[i];
+      const double share = std::abs(p.weight * cosine);
+      local[7] += share;
+      if (p.status == PointStatus::Stick)
+        local[8] += share;
     }
   }
   double global[9];
@@ -70,6 +79,9 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     out.force[i] = global[i];
     out.center[i] = global[3] > 0 ? global[4 + i] / global[3] : 0.0;
   }
+  auto fromArea = [dim](double area) { return dim == 2 ? 0.5 * area : std::sqrt(area / M_PI); };
+  out.equivalentZoneSize = fromArea(global[7]);
+  out.equivalentStickZoneSize = fromArea(global[8]);
   out.numFree = gcounts[0];
   out.numStick = gcounts[1];
   out.numSlip = gcounts[2];

@@ -1,8 +1,12 @@
 #pragma once
 // Global contact quantities of a solved state (issue #5 outputs): resultant force, peak
 // pressure, contact-zone half-width (2D) or radius (3D), stick-zone size, point counts.
-// Zone sizes are measured in the obstacle plane from the centroid of the contact points, as the
-// midpoint between the outermost point in the zone and the next point outside it.
+// Zone sizes, two ways (both in the obstacle plane):
+//  - outermost: from the centroid of the contact points, the midpoint between the outermost point
+//    in the zone and the next point outside it (resolves a clean 2D edge to half a point spacing);
+//  - equivalent: from the area A the zone's points stand for (each point its share ∫_F L_p of its
+//    face, L_p the Lagrange function of the normal trace at p, projected onto the plane): A/2 in
+//    2D, √(A/π) in 3D. It averages over a ragged 3D edge, where the outermost point overshoots.
 #include <array>
 #include <vector>
 
@@ -15,8 +19,10 @@ namespace sc::contact {
 struct ContactSummary {
   std::array<double, 3> force{};  ///< ∫_ΓC σn ds (vector resultant)
   double maxPressure = 0.0;       ///< max over points of −σ_N (≥ 0)
-  double zoneSize = 0.0;          ///< half-width (2D) or radius (3D) of the contact zone
+  double zoneSize = 0.0;          ///< half-width (2D) or radius (3D) of the contact zone (outermost)
   double stickZoneSize = 0.0;     ///< the same for the stick zone (0 without friction)
+  double equivalentZoneSize = 0.0;       ///< from the zone's area: A/2 (2D), √(A/π) (3D)
+  double equivalentStickZoneSize = 0.0;  ///< the same for the stick zone
   std::array<double, 3> center{};
   long long numFree = 0, numStick = 0, numSlip = 0;
 };
