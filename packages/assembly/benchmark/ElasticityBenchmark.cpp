@@ -2,7 +2,18 @@
 // elasticity system (issue #4). Prints one line per size and solver; numbers in docs/benchmarks.md.
 //
 //   elasticity_benchmark [--dim=2|3] [--max-dofs=N] [--degree=k] [--solvers=KLU2,MUMPS]
-//   mpiexec -n 2 elasticity_benchmark --dim=3 --max-dofs=500000
+//                        [--mesh-size=h]
+//   mpiexec -n 2 elasticity_benchmark --dim=3 --max-dofs=600000 --mesh-size=0.4
+//
+// Sizes: the initial Gmsh mesh of the unit square/cube (element size h, default 0.25 in 2D and
+// 0.5 in 3D), then uniform bisection until the DOF count exceeds --max-dofs. One uniform cycle
+// multiplies the DOFs by ~4 in 2D and ~8 in 3D; --mesh-size fills the gaps (DOFs ~ h^-d).
+//
+// setup = partition + DOF numbering (number_s, on the whole replicated mesh) + the exact
+// FECrsGraph of this rank's elements. Every time is the maximum over ranks (phases start after a
+// barrier); "per rank" rates are the global count / that time / number of ranks; peak memory is
+// the resident-set high-water mark (getrusage) since the start of the program, maximum and sum
+// over ranks.
 #include <sys/resource.h>
 
 #include <cstdio>
@@ -11,6 +22,7 @@
 #include <vector>
 
 #include <Kokkos_Core.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_GlobalMPISession.hpp>
 #include <Teuchos_Time.hpp>
@@ -33,6 +45,20 @@ double peakMemoryMB()
   getrusage(RUSAGE_SELF, &u);
   return u.ru_maxrss / 1024.0;
 }
+
+double maxOverRanks(const Teuchos::Comm<int>& comm, double v)
+{
+  double r = v;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &v, &r);
+  return r;
+}
+
+double sumOverRanks(const Teuchos::Comm<int>& comm, double v)
+{
+  double r = v;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &v, &r);
+  return r;
+}
 }  // namespace
 
 int main(int argc, char* argv[])
@@ -42,6 +68,7 @@ int main(int argc, char* argv[])
   auto comm = Teuchos::DefaultComm<int>::getComm();
   int dim = 2, degree = 1;
   long long maxDofs = 200000;
+  double meshSize = 0.0;  // 0: the default of the dimension
   std::vector<std::string> solvers = {"KLU2", "MUMPS"};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -51,6 +78,8 @@ int main(int argc, char* argv[])
       degree = std::stoi(a.substr(9));
     else if (a.rfind("--max-dofs=", 0) == 0)
       maxDofs = std::stoll(a.substr(11));
+    else if (a.rfind("--mesh-size=", 0) == 0)
+      meshSize = std::stod(a.substr(12));
     else if (a.rfind("--solvers=", 0) == 0) {
       solvers.clear();
       std::string list = a.substr(10), item;
@@ -69,28 +98,48 @@ int main(int argc, char* argv[])
   }
   Teuchos::ParameterList meshList;
   meshList.set("Source", std::string(dim == 2 ? "Unit square" : "Unit cube"));
-  meshList.set("Initial mesh size", dim == 2 ? 0.25 : 0.5);
+  if (meshSize <= 0.0) meshSize = dim == 2 ? 0.25 : 0.5;
+  meshList.set("Initial mesh size", meshSize);
   auto refiner = sc::mesh::MeshFactory::build(meshList, dim, *comm);
   sc::core::Material material{1.0, 0.3};
   auto exact = sc::core::createExactSolution("Manufactured smooth", dim, material);
   sc::core::BoundaryConditions bcs;
   for (const char* n : {"Left", "Bottom"})
     bcs.conditions.push_back({n, sc::core::BoundaryType::Displacement, {}, true});
-  if (comm->getRank() == 0)
-    std::printf("# %dD k=%d ranks=%d\n# %10s %9s %12s %12s %12s %-6s %9s %9s %9s %10s %9s\n", dim,
-                degree, comm->getSize(), "dofs", "elements", "setup_s", "assemble_s",
-                "dofs/s/rank", "solver", "analyse_s", "factor_s", "solve_s", "residual", "peakMB");
+  const int nRanks = comm->getSize();
+  if (comm->getRank() == 0) {
+    std::string solverList;
+    for (const auto& t : solvers) solverList += (solverList.empty() ? "" : ",") + t;
+    std::printf("# elasticity_benchmark %dD k=%d ranks=%d mesh-size=%g max-dofs=%lld solvers=%s\n"
+                "# times: max over ranks [s]; rates: global count / time / ranks; peakMB: RSS "
+                "high-water mark, max and sum over ranks\n",
+                dim, degree, nRanks, meshSize, maxDofs, solverList.c_str());
+    std::printf("# %9s %8s %8s %8s %8s %10s %10s %-6s %8s %8s %8s %9s %8s %8s\n", "dofs",
+                "elements", "setup_s", "number_s", "assem_s", "dofs/s/rk", "elem/s/rk", "solver",
+                "analyse", "factor", "solve", "residual", "peakMB", "sumMB");
+    std::fflush(stdout);
+  }
   while (true) {
     auto m = refiner->mesh();
+    comm->barrier();
     const double t0 = Teuchos::Time::wallTime();
     auto owner = sc::mesh::partitionElements(*m, *comm);
-    auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
+    auto space =
+        Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
     if (space->numGlobalDofs() > maxDofs)
       break;
+    const double tSpace = Teuchos::Time::wallTime();
     sc::assembly::MixedElasticityAssembler assembler(space, comm);
     const double t1 = Teuchos::Time::wallTime();
+    comm->barrier();
+    const double t1b = Teuchos::Time::wallTime();
     assembler.assemble({material, bcs, exact.get()});
     const double t2 = Teuchos::Time::wallTime();
+    const double setupS = maxOverRanks(*comm, t1 - t0);
+    const double numberS = maxOverRanks(*comm, tSpace - t0);
+    const double assembleS = maxOverRanks(*comm, t2 - t1b);
+    const long long dofs = space->numGlobalDofs();
+    const int elements = m->numElements();
     for (const auto& type : solvers) {
       Teuchos::ParameterList sl;
       sl.set("Type", type);
@@ -98,14 +147,20 @@ int main(int argc, char* argv[])
       solver->setSymmetric(true);
       auto x = assembler.createVector();
       solver->setOperator(assembler.matrix());
+      comm->barrier();
       solver->solve(*assembler.rhs(), *x);
       const auto& st = solver->lastSolveStats();
+      const double analyseS = maxOverRanks(*comm, st.symbolicSeconds);
+      const double factorS = maxOverRanks(*comm, st.numericSeconds);
+      const double solveS = maxOverRanks(*comm, st.solveSeconds);
+      const double peakMax = maxOverRanks(*comm, peakMemoryMB());
+      const double peakSum = sumOverRanks(*comm, peakMemoryMB());
       if (comm->getRank() == 0)
-        std::printf("  %10lld %9d %12.3f %12.3f %12.3g %-6s %9.3f %9.3f %9.3f %10.2e %9.0f\n",
-                    space->numGlobalDofs(), m->numElements(), t1 - t0, t2 - t1,
-                    space->numGlobalDofs() / (t2 - t1) / comm->getSize(), type.c_str(),
-                    st.symbolicSeconds, st.numericSeconds, st.solveSeconds, st.relativeResidual,
-                    peakMemoryMB());
+        std::printf("  %9lld %8d %8.3f %8.3f %8.3f %10.3g %10.3g %-6s %8.3f %8.3f %8.3f %9.2e "
+                    "%8.0f %8.0f\n",
+                    dofs, elements, setupS, numberS, assembleS, dofs / assembleS / nRanks,
+                    elements / assembleS / nRanks, type.c_str(), analyseS, factorS, solveS,
+                    st.relativeResidual, peakMax, peakSum);
       std::fflush(stdout);
     }
     refiner->refineUniformly();
