@@ -12,7 +12,7 @@ SC_DEBIAN_PACKAGES=(
   cmake ninja-build ccache g++ make pkg-config
   openmpi-bin libopenmpi-dev
   trilinos-all-dev trilinos-dev libptscotch-dev libscotch-dev
-  libhdf5-openmpi-dev libmetis-dev libgmsh-dev libmumps-dev libboost-dev nlohmann-json3-dev
+  libhdf5-openmpi-dev libmetis-dev libgmsh-dev libmumps-dev libopenblas0-serial libboost-dev nlohmann-json3-dev
 )
 
 sc_log() { printf '[stresscontact setup] %s\n' "$*"; }

@@ -36,6 +36,7 @@ struct HertzCase {
   double meshSize = 0.1;
   int localRefinements = 6;  ///< bisection sweeps of the elements near the contact zone
   double refineRadius = 0.25;
+  std::string refineBoundary;  ///< Mesh/Local refinement/Boundary (empty: a volume region)
   std::string solver = "MUMPS";
   std::string coulombMethod;  ///< Contact/Newton/Coulomb method (empty: the default)
 };
@@ -61,6 +62,7 @@ HertzResult solveHertz(const HertzCase& h)
   center[1] = h.refineCenterY;
   local.set("Center", center);
   local.set("Radius", h.refineRadius);
+  local.set("Boundary", h.refineBoundary);
   sc::mesh::MeshFactory::refineLocally(*refiner, local);
   auto m = refiner->mesh();
   auto owner = sc::mesh::partitionElements(*m, *comm);
@@ -361,8 +363,11 @@ HertzCase hertz3DScene()
   h.nu = 0.25;
   h.displacement = 0.025;
   h.meshSize = 0.25;
-  h.localRefinements = 3;
-  h.refineRadius = 0.2;
+  // 9 sweeps of the elements with a Cap face within 0.22 of the bottom point: 8543 tets, 346k DOFs
+  // (6 sweeps, 139k DOFs: radius from the area +5.4%, p0 +5.0%, short of the 5% target).
+  h.localRefinements = 9;
+  h.refineRadius = 0.22;
+  h.refineBoundary = "Cap";
   return h;
 }
 }  // namespace
@@ -375,18 +380,29 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless3D)
   const double P = r.summary.force[2];
   const double Estar = h.E / (1 - h.nu * h.nu);
   const double a = std::cbrt(3.0 * P / (4.0 * Estar)), p0 = 3.0 * P / (2.0 * M_PI * a * a);
-  out << "3D: P = " << P << ", radius " << r.summary.zoneSize << " (Hertz " << a << "), p0 "
-      << r.summary.maxPressure << " (Hertz " << p0 << "), Newton steps "
-      << r.stats.newtonIterations << ", centre (" << r.summary.center[0] << ", "
-      << r.summary.center[1] << ")\n";
+  out << "3D: P = " << P << ", radius from the area " << r.summary.equivalentZoneSize
+      << ", outermost " << r.summary.zoneSize << " (Hertz " << a << "), p0 " << r.summary.maxPressure
+      << " (Hertz " << p0 << "), Newton steps " << r.stats.newtonIterations << ", centre ("
+      << r.summary.center[0] << ", " << r.summary.center[1] << ")\n";
   TEST_ASSERT(r.stats.converged);
   TEST_COMPARE(std::hypot(r.summary.force[0], r.summary.force[1]), <=, 1e-3 * P);
-  // Resolution-limited guard, NOT issue #5's 5% target: on this 78k-DOF mesh the contact zone
-  // holds only a few rings of points and the radius estimate is +28%, p0 +18% (2026-11-22,
-  // docs/contact.md). The 5% check needs a finer mesh than a CI run affords (341k DOFs took
-  // > 10 min of MUMPS); it stays open on the issue.
-  TEST_COMPARE(std::abs(r.summary.zoneSize - a), <=, 0.35 * a);
-  TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, 0.25 * p0);
+  // Symmetry about the axis: the centre of pressure ∫x σ_N / ∫σ_N (the unweighted centroid of
+  // the active points is biased by the unstructured point density: 0.0104 here).
+  double local[3] = {0, 0, 0}, global[3];
+  for (const auto& p : r.points) {
+    local[0] += p.x[0] * p.sigmaN * p.weight;
+    local[1] += p.x[1] * p.sigmaN * p.weight;
+    local[2] += p.sigmaN * p.weight;
+  }
+  Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_SUM, 3, local, global);
+  const double centre = std::hypot(global[0], global[1]) / std::abs(global[2]);
+  out << "centre of pressure at " << centre << " from the axis\n";
+  TEST_COMPARE(centre, <=, 0.01 * a);
+  // Issue #5: radius and p0 within 5% of the sphere formulas from the computed load. Measured
+  // (2026-11-22, docs/contact.md) +2.1% for the radius from the zone's area and +4.2% for p0; the
+  // outermost active point overshoots by 13% because the discrete zone edge is ragged.
+  TEST_COMPARE(std::abs(r.summary.equivalentZoneSize - a), <=, 0.05 * a);
+  TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, 0.05 * p0);
 }
 
 TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
@@ -395,13 +411,19 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
   h.law = sc::core::FrictionLaw::Coulomb;
   h.mu = 0.4;
   const auto r = solveHertz(h);
-  out << "3D Coulomb: radius " << r.summary.zoneSize << ", stick radius " << r.summary.stickZoneSize
-      << ", stick/slip " << r.summary.numStick << "/" << r.summary.numSlip << ", Newton steps "
-      << r.stats.newtonIterations << "\n";
+  out << "3D Coulomb: radius " << r.summary.equivalentZoneSize << ", stick radius "
+      << r.summary.equivalentStickZoneSize << " (from the areas), stick/slip " << r.summary.numStick
+      << "/" << r.summary.numSlip << ", Newton steps " << r.stats.newtonIterations << "\n";
   TEST_ASSERT(r.stats.converged);
   TEST_COMPARE(r.summary.numStick, >, 0);
-  // The friction disc holds at every point, with equality on slip points (the last step's
-  // directions moved by < 1e-6, so equality holds to about that).
+  TEST_COMPARE(r.summary.numSlip, >, 0);
+  TEST_COMPARE(r.summary.equivalentStickZoneSize, <, r.summary.equivalentZoneSize);
+  // Hüeber–Stadler–Wohlmuth linearisation: a handful of steps (the frozen direction took 44 on
+  // the previous mesh); the semismooth Newton must not degrade to a linear fixed point.
+  TEST_COMPARE(r.stats.newtonIterations, <=, 15);
+  TEST_EQUALITY(r.stats.fixedPointIterations, 0);
+  // The friction disc holds at every point, with equality on slip points (a slip direction
+  // counts as settled when it moves by < 1e-6, so equality holds to about that).
   for (const auto& p : r.points) {
     const double t = std::hypot(p.sigmaT[0], p.sigmaT[1]), bound = h.mu * std::abs(p.sigmaN);
     TEST_COMPARE(t, <=, bound * (1 + 1e-6) + 1e-12);
