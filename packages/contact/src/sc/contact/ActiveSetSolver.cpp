@@ -220,7 +220,7 @@ int ActiveSetSolver::updateState(bool flipToStick)
   const int nt = space_.dim() - 1;
   const bool friction = settings_.needsFriction();
   // In the Coulomb fixed point each inner problem is Tresca with the bounds μ|σ_N| of the last
-  // outer iterate (p.trescaBound).
+  // outer iterate (p.frictionBound).
   const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
   int changes = 0;
