@@ -135,9 +135,9 @@ double centroidDistance(const SimplexMesh& m, const int* v, int n, double cx, do
   }
   return std::hypot(x - cx, y - cy);
 }
-}  // namespace
 
-TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAroundAPoint)
+// Half disc, Gmsh 0.1, 4 sweeps within 0.2 of the bottom point (0, 0), optionally along one part.
+Teuchos::RCP<BisectionRefiner> locallyRefinedHalfDisc(const std::string& boundary)
 {
   Teuchos::ParameterList p;
   p.set("Initial mesh size", 0.1);
@@ -145,7 +145,14 @@ TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAroundAPoint)
   local.set("Levels", 4);
   local.set("Center", Teuchos::Array<double>(2, 0.0));
   local.set("Radius", 0.2);
-  auto refiner = MeshFactory::build(p, 2);
+  local.set("Boundary", boundary);
+  return MeshFactory::build(p, 2);
+}
+}  // namespace
+
+TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAroundAPoint)
+{
+  auto refiner = locallyRefinedHalfDisc("");
   const auto m = refiner->mesh();
   int near = 0, far = 0;
   for (int e = 0; e < m->numElements(); ++e) {
@@ -164,14 +171,7 @@ TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAroundAPoint)
 
 TEUCHOS_UNIT_TEST(MeshFactory, LocalRefinementAlongABoundary)
 {
-  Teuchos::ParameterList p;
-  p.set("Initial mesh size", 0.1);
-  auto& local = p.sublist("Local refinement");
-  local.set("Levels", 4);
-  local.set("Center", Teuchos::Array<double>(2, 0.0));
-  local.set("Radius", 0.2);
-  local.set("Boundary", std::string("Arc"));
-  auto refiner = MeshFactory::build(p, 2);
+  auto refiner = locallyRefinedHalfDisc("Arc");
   const auto m = refiner->mesh();
   int onArc = 0, maxInterior = 0;
   for (int f : m->boundaryFacesOf("Arc"))
