@@ -122,19 +122,8 @@ std::vector<std::array<double, 2>> gatherActiveProfile(const std::vector<sc::con
       mine.push_back(p.x[0]);
       mine.push_back(p.sigmaN);
     }
-  const int n = comm->getSize(), rank = comm->getRank();
-  std::vector<int> counts(n, 0), all(n, 0);
-  counts[rank] = static_cast<int>(mine.size());
-  Teuchos::reduceAll<int, int>(*comm, Teuchos::REDUCE_SUM, n, counts.data(), all.data());
-  int offset = 0, total = 0;
-  for (int r = 0; r < n; ++r) {
-    if (r < rank) offset += all[r];
-    total += all[r];
-  }
-  std::vector<double> buffer(total, 0.0), gathered(total, 0.0);
-  std::copy(mine.begin(), mine.end(), buffer.begin() + offset);
-  if (total > 0)
-    Teuchos::reduceAll<int, double>(*comm, Teuchos::REDUCE_SUM, total, buffer.data(), gathered.data());
+  const auto gathered = sc::contact::gatherAllVariable(mine, *comm);
+  const int total = static_cast<int>(gathered.size());
   std::vector<std::array<double, 2>> profile;
   for (int i = 0; i + 1 < total; i += 2)
     profile.push_back({gathered[i], gathered[i + 1]});

@@ -39,6 +39,23 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
 
 }  // namespace
 
+std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm)
+{
+  int n = static_cast<int>(mine.size()), total = 0;
+  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_SUM, 1, &n, &total);
+  std::vector<int> sizes(comm.getSize());
+  Teuchos::gatherAll<int, int>(comm, 1, &n, comm.getSize(), sizes.data());
+  // Through a zero-padded sum: simple, and the point counts are small.
+  std::vector<double> padded(total, 0.0), all(total, 0.0);
+  int offset = 0;
+  for (int r = 0; r < comm.getRank(); ++r)
+    offset += sizes[r];
+  std::copy(mine.begin(), mine.end(), padded.begin() + offset);
+  if (total > 0)
+    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, total, padded.data(), all.data());
+  return all;
+}
+
 ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
                                 const std::vector<double>& obstacleNormal,
                                 const Teuchos::Comm<int>& comm)
@@ -107,19 +124,8 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     mine.push_back(s);
     mine.push_back(static_cast<double>(static_cast<int>(p.status)));
   }
-  int n = static_cast<int>(mine.size()), total = 0;
-  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_SUM, 1, &n, &total);
-  std::vector<int> sizes(comm.getSize());
-  Teuchos::gatherAll<int, int>(comm, 1, &n, comm.getSize(), sizes.data());
-  std::vector<double> all(total);
-  // Variable-size all-gather through a zero-padded sum (counts are small).
-  std::vector<double> padded(total, 0.0);
-  int offset = 0;
-  for (int r = 0; r < comm.getRank(); ++r)
-    offset += sizes[r];
-  std::copy(mine.begin(), mine.end(), padded.begin() + offset);
-  if (total > 0)
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, total, padded.data(), all.data());
+  const std::vector<double> all = gatherAllVariable(mine, comm);
+  const int total = static_cast<int>(all.size());
   std::vector<double> s;
   std::vector<char> active, stick;
   for (int i = 0; i + 1 < total; i += 2) {

@@ -27,6 +27,9 @@ struct ContactSummary {
   long long numFree = 0, numStick = 0, numSlip = 0;
 };
 
+/// Every rank's `mine` concatenated in rank order, on every rank (a variable-size all-gather).
+std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm);
+
 ContactSummary summarizeContact(const std::vector<ContactPoint>& localPoints, int dim,
                                 const std::vector<double>& obstacleNormal,
                                 const Teuchos::Comm<int>& comm);
