@@ -15,6 +15,7 @@
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
+#include <sc/contact/Obstacle.hpp>
 #include <sc/io/CsvWriter.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
@@ -81,6 +82,9 @@ void Simulation::setupMesh()
   mesh_ = refiner_->mesh();
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
+  if (boundaryConditions_.hasContact())
+    contact::checkObstacle(*mesh_, contact_,
+                           boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
   progress_.report("mesh", std::to_string(mesh_->numElements()) + " elements, " +
                                std::to_string(mesh_->numVertices()) + " vertices");
 }

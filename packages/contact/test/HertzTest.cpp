@@ -14,6 +14,8 @@
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
+#include <sc/contact/Obstacle.hpp>
+#include <sc/core/Error.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/MeshFactory.hpp>
@@ -39,6 +41,9 @@ struct HertzCase {
   std::string refineBoundary;  ///< Mesh/Local refinement/Boundary (empty: a volume region)
   std::string solver = "MUMPS";
   std::string coulombMethod;  ///< Contact/Newton/Coulomb method (empty: the default)
+  int degree = 1;             ///< Discretization/Degree k
+  sc::core::ContactFrame frame = sc::core::ContactFrame::ObstacleNormal;
+  double obstacleHeight = 0.0;  ///< the plane y = h (2D) / z = h (3D); h > 0: initial overlap
 };
 
 struct HertzResult {
@@ -66,7 +71,7 @@ HertzResult solveHertz(const HertzCase& h)
   sc::mesh::MeshFactory::refineLocally(*refiner, local);
   auto m = refiner->mesh();
   auto owner = sc::mesh::partitionElements(*m, *comm);
-  auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, 1, owner, comm->getRank()));
+  auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, h.degree, owner, comm->getRank()));
   sc::assembly::MixedElasticityAssembler assembler(space, comm);
   if (comm->getRank() == 0)
     std::cout << "  [" << m->numElements() << " elements, " << space->numGlobalDofs() << " DOFs]" << std::endl;
@@ -80,12 +85,15 @@ HertzResult solveHertz(const HertzCase& h)
   assembler.assemble({material, bcs, nullptr});
   sc::core::ContactSettings cs;
   cs.obstaclePoint.assign(d, 0.0);
+  cs.obstaclePoint[d - 1] = h.obstacleHeight;
+  cs.frame = h.frame;
   cs.obstacleNormal.assign(d, 0.0);
   cs.obstacleNormal[d - 1] = 1.0;
   cs.frictionLaw = h.law;
   cs.frictionCoefficient = h.mu;
   Teuchos::ParameterList newton;
   if (!h.coulombMethod.empty()) newton.set("Coulomb method", h.coulombMethod);
+  sc::contact::checkObstacle(*m, cs, {contactName});
   sc::contact::ActiveSetSolver contact(*space, cs, material, {contactName}, newton, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", h.solver);
@@ -138,14 +146,11 @@ struct FrictionlessHertz2D {
 // Frictionless Hertz 2D on the mesh refined towards the zone: checks of issue #5 against the
 // plane-strain Hertz values from the computed load P (Johnson 1985): a = √(4PR/(πE*)),
 // p0 = 2P/(πa), p(x) = p0√(1 − x²/a²). Returns the numbers for cross-ν comparisons.
-FrictionlessHertz2D frictionless2D(double nu, Teuchos::FancyOStream& out, bool& success)
+// `tolerance`: relative bound on a and p0 (issue #5: 3%).
+FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::FancyOStream& out,
+                                   bool& success)
 {
-  HertzCase h;
-  h.nu = nu;
-  // Two more sweeps than the other 2D cases in a smaller disc around the zone: the half-width is
-  // read off the point spacing (docs/contact.md), which must be well below 3% of a.
-  h.localRefinements = 8;
-  h.refineRadius = 0.12;
+  const double nu = h.nu;
   const auto r = solveHertz(h);
   FrictionlessHertz2D f;
   f.P = r.summary.force[1];  // the foundation pushes the body up
@@ -153,14 +158,15 @@ FrictionlessHertz2D frictionless2D(double nu, Teuchos::FancyOStream& out, bool& 
   f.p0 = 2.0 * f.P / (M_PI * f.a);
   TEST_ASSERT(r.stats.converged);
   TEST_COMPARE(f.P, >, 0.0);
-  TEST_COMPARE(std::abs(r.summary.zoneSize - f.a), <=, 0.03 * f.a);
-  TEST_COMPARE(std::abs(r.summary.maxPressure - f.p0), <=, 0.03 * f.p0);
+  TEST_COMPARE(std::abs(r.summary.zoneSize - f.a), <=, tolerance * f.a);
+  TEST_COMPARE(std::abs(r.summary.maxPressure - f.p0), <=, tolerance * f.p0);
   // Symmetry about x = 0: no horizontal resultant, zone centred.
   TEST_COMPARE(std::abs(r.summary.force[0]), <=, 1e-3 * f.P);
   TEST_COMPARE(std::abs(r.summary.center[0]), <=, 0.01 * f.a);
-  // Profile in the inner 80% of the zone, and its point-to-point oscillation there: the
-  // deviation of each σ_N from the mean of its two neighbours (the Hertz curve itself bends by
-  // < 0.1% of p0 over three points at this spacing, so this measures zigzag, not curvature).
+  // Profile in the inner 80% of the zone, and its point-to-point staircase there: the deviation
+  // of each σ_N from the straight line through its two neighbours (points come in groups of
+  // k + 1 per face, unevenly spaced, so the mean of the neighbours would count the slope; the
+  // Hertz curve's own bend over three points is < 0.3% of p0 at this spacing).
   const auto profile = gatherActiveProfile(r.points);
   f.profileError = f.zigzag = 0.0;
   for (std::size_t i = 0; i < profile.size(); ++i) {
@@ -168,14 +174,19 @@ FrictionlessHertz2D frictionless2D(double nu, Teuchos::FancyOStream& out, bool& 
     if (std::abs(x) >= 0.8 * f.a) continue;
     f.profileError = std::max(f.profileError,
                               std::abs(-profile[i][1] - f.p0 * std::sqrt(1.0 - x * x / (f.a * f.a))));
-    if (i > 0 && i + 1 < profile.size())
-      f.zigzag = std::max(f.zigzag,
-                          std::abs(profile[i][1] - 0.5 * (profile[i - 1][1] + profile[i + 1][1])));
+    if (i > 0 && i + 1 < profile.size()) {
+      const auto &l = profile[i - 1], &rr = profile[i + 1];
+      const double line = l[1] + (rr[1] - l[1]) * (x - l[0]) / (rr[0] - l[0]);
+      f.zigzag = std::max(f.zigzag, std::abs(profile[i][1] - line));
+    }
   }
-  out << "nu = " << std::setprecision(6) << nu << std::setprecision(3) << ": P = " << f.P << ", a = " << r.summary.zoneSize << " (Hertz " << f.a
+
+  out << "k = " << h.degree << ", "
+      << (h.frame == sc::core::ContactFrame::BodyNormal ? "body" : "obstacle") << " frame, nu = "
+      << std::setprecision(6) << nu << std::setprecision(4) << ": P = " << f.P << ", a = " << r.summary.zoneSize << " (Hertz " << f.a
       << "), p0 = " << r.summary.maxPressure << " (Hertz " << f.p0 << "), Newton steps "
       << r.stats.newtonIterations << ", centre " << r.summary.center[0] << ", profile error "
-      << f.profileError / f.p0 * 100 << "% of p0, zigzag " << f.zigzag / f.p0 * 100 << "% of p0 ("
+      << f.profileError / f.p0 * 100 << "% of p0, staircase " << f.zigzag / f.p0 * 100 << "% of p0 ("
       << profile.size() << " active points)\n";
   TEST_COMPARE(f.profileError, <=, 0.05 * f.p0);
   return f;
@@ -185,23 +196,67 @@ FrictionlessHertz2D frictionless2D(double nu, Teuchos::FancyOStream& out, bool& 
 
 // ν = 0.28 (DESIGN §9) and the incompressible limit (issue #5: "converges, no locking or
 // oscillation in σ_N"): ν = 0.4999 and 0.5 meet the same Hertz checks (E* = E/(1−ν²) stays
-// finite), and the point-to-point zigzag of σ_N grows by at most half over ν = 0.28 plus 0.2% of
-// p0 (a locking discretisation shows a checkerboard pressure here).
+// finite), and the point-to-point staircase of σ_N grows by at most half over ν = 0.28 plus 0.2%
+// of p0 (a locking discretisation shows a checkerboard pressure here).
+// Two more sweeps than the other 2D cases in a smaller disc around the zone: the half-width is
+// read off the point spacing (docs/contact.md), which must be well below 3% of a.
+HertzCase frictionlessCase(double nu)
+{
+  HertzCase h;
+  h.nu = nu;
+  h.localRefinements = 8;
+  h.refineRadius = 0.12;
+  return h;
+}
+
 TEUCHOS_UNIT_TEST(Hertz, Frictionless2D)
 {
-  const auto reference = frictionless2D(0.28, out, success);
+  const auto reference = frictionless2D(frictionlessCase(0.28), 0.03, out, success);
   for (double nu : {0.4999, 0.5}) {
-    const auto f = frictionless2D(nu, out, success);
+    const auto f = frictionless2D(frictionlessCase(nu), 0.03, out, success);
     TEST_COMPARE(f.zigzag / f.p0, <=, 1.5 * reference.zigzag / reference.p0 + 0.002);
   }
 }
 
-TEUCHOS_UNIT_TEST(Hertz, Coulomb2D)
+// The talk's literal body-normal frame (issue #5's verified model) still meets issue #5's 3%.
+TEUCHOS_UNIT_TEST(Hertz, Frictionless2DBodyFrame)
+{
+  HertzCase h = frictionlessCase(0.28);
+  h.frame = sc::core::ContactFrame::BodyNormal;
+  frictionless2D(h, 0.03, out, success);
+}
+
+// The obstacle-normal frame (issue #11, "contact model"): on 10 sweeps (180k DOFs) a and p0
+// within 1% of Hertz from the computed load and a staircase below 1% of p0 (measured
+// 2026-12-01: +0.2%, +0.17%, 0.3%; the body frame has a face-wise staircase of ~5-7% of p0).
+TEUCHOS_UNIT_TEST(Hertz, ObstacleFrameAccuracy2D)
+{
+  HertzCase h = frictionlessCase(0.28);
+  h.localRefinements = 10;
+  const auto f = frictionless2D(h, 0.01, out, success);
+  TEST_COMPARE(f.zigzag, <=, 0.01 * f.p0);
+}
+
+// Degree 2 (issue #11, defect 1: it returned a pulling force of −40404 on the equispaced RT_2
+// lattice, whose middle point has the interpolatory weight −1/3). Same tolerances as k = 1. On
+// straight-sided elements the k = 2 traction resolves the kinks of the polygonal arc: a
+// staircase of ~3.5% of p0 that curved boundary elements are to remove (docs/contact.md).
+TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless2D)
+{
+  HertzCase h = frictionlessCase(0.28);
+  h.degree = 2;
+  frictionless2D(h, 0.03, out, success);
+}
+
+namespace {
+void coulomb2D(int degree, Teuchos::FancyOStream& out, bool& success)
 {
   HertzCase h;
+  h.degree = degree;
   h.law = sc::core::FrictionLaw::Coulomb;
   h.mu = 0.4;
   const auto r = solveHertz(h);
+  out << "k = " << degree << ": force " << r.summary.force[1] << ", ";
   out << "stick half-width " << r.summary.stickZoneSize << " of " << r.summary.zoneSize
       << ", points free/stick/slip " << r.summary.numFree << "/" << r.summary.numStick << "/"
       << r.summary.numSlip << ", Newton steps " << r.stats.newtonIterations << "\n";
@@ -218,6 +273,10 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb2D)
       TEST_COMPARE(std::abs(p.sigmaT[0]), <=, h.mu * std::abs(p.sigmaN) * (1 + 1e-9));
   }
 }
+}  // namespace
+
+TEUCHOS_UNIT_TEST(Hertz, Coulomb2D) { coulomb2D(1, out, success); }
+TEUCHOS_UNIT_TEST(Hertz, Degree2Coulomb2D) { coulomb2D(2, out, success); }
 
 namespace {
 
@@ -335,6 +394,60 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
     TEST_EQUALITY(r.summary.numStick, r0.summary.numStick);
     TEST_COMPARE(relativeDifference(r.x, r0.x, factor), <=, 1e-8);
   }
+}
+
+// Initial overlap (issue #11, defect 2): a flat punch on the plane y = δ, i.e. overlapping its
+// base by δ, is the same punch on y = 0 pushed δ further: the same tractions at every point
+// (the analytic equivalence of the linearised problem), σ to 1e-8 of the peak.
+TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
+{
+  HertzCase raised;
+  raised.source = "Unit square";
+  raised.contactName = "Bottom";
+  raised.meshSize = 0.125;
+  raised.localRefinements = 0;
+  raised.law = sc::core::FrictionLaw::Coulomb;
+  raised.mu = 0.4;
+  raised.displacement = 0.01;
+  raised.obstacleHeight = 0.002;
+  HertzCase pushed = raised;
+  pushed.obstacleHeight = 0.0;
+  pushed.displacement = 0.012;
+  const auto a = solveHertz(raised), b = solveHertz(pushed);
+  TEST_ASSERT(a.stats.converged && b.stats.converged);
+  out << "raised plane: force " << a.summary.force[1] << ", pushed: " << b.summary.force[1] << "\n";
+  TEST_COMPARE(b.summary.force[1], >, 0.0);
+  TEST_FLOATING_EQUALITY(a.summary.force[1], b.summary.force[1], 1e-8);
+  TEST_EQUALITY(a.summary.numStick, b.summary.numStick);
+  TEST_EQUALITY(a.points.size(), b.points.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(a.points.size(), b.points.size()); ++i) {
+    worst = std::max(worst, std::abs(a.points[i].sigmaN - b.points[i].sigmaN));
+    worst = std::max(worst, std::abs(a.points[i].sigmaT[0] - b.points[i].sigmaT[0]));
+  }
+  TEST_COMPARE(worst, <=, 1e-8 * b.summary.maxPressure);
+}
+
+// The obstacle's normal must point towards the body; the opposite is an input error (DESIGN §3's
+// sign trap: it used to "converge" with nothing in contact and a zero load). A deep overlap too.
+TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  Teuchos::ParameterList meshList;
+  meshList.set("Source", std::string("Half disc"));
+  meshList.set("Initial mesh size", 0.2);
+  auto m = sc::mesh::MeshFactory::build(meshList, 2, *comm)->mesh();
+  sc::core::ContactSettings cs;
+  cs.obstaclePoint = {0.0, 0.0};
+  cs.obstacleNormal = {0.0, 1.0};
+  sc::contact::checkObstacle(*m, cs, {"Arc"});  // the Hertz scene: fine
+  cs.obstaclePoint = {0.0, 0.05};               // 5% overlap: solved as a prescribed penetration
+  sc::contact::checkObstacle(*m, cs, {"Arc"});
+  cs.obstacleNormal = {0.0, -1.0};
+  TEST_THROW(sc::contact::checkObstacle(*m, cs, {"Arc"}), sc::core::InputError);
+  cs.obstacleNormal = {0.0, 1.0};
+  cs.obstaclePoint = {0.0, 0.5};  // half the body inside the plane
+  TEST_THROW(sc::contact::checkObstacle(*m, cs, {"Arc"}), sc::core::InputError);
 }
 
 #endif  // !SC_HERTZ_3D

@@ -103,6 +103,8 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   std::vector<int> contactIds;
   for (const auto& name : contactBoundaries)
     contactIds.push_back(m.boundaryId(name));
+  const bool obstacleFrame = settings.frame == core::ContactFrame::ObstacleNormal;
+  double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
   disc::FaceValues fv(space, 2 * space.degree() + 2);
   for (int e : space.ownedElements()) {
     for (int lf = 0; lf <= d; ++lf) {
@@ -112,7 +114,11 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         continue;
       const auto dofPoints = disc::stressFaceDofPoints(space, e, lf);
       fv.reinit(e, lf);
-      const auto& n = fv.normal();
+      // The contact frame (n, t1[, t2]): n along the obstacle's normal (out of the body) or the
+      // face's outward normal; fv.normal() is the latter.
+      std::array<double, 3> n = fv.normal();
+      if (obstacleFrame)
+        n = obstacle_->contactNormal(dofPoints.front().x.data());
       std::array<double, 3> t1{}, t2{};
       if (d == 2) {
         t1 = {-n[1], n[0], 0.0};
@@ -148,14 +154,27 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         p.scale = dp.scale;
         p.c = penaltyFactor_ * twoMu / (hF * area);
         for (int q = 0; q < fv.numPoints(); ++q) {
-          const double psi = fv.stressNormal(dp.localDof, q) / dp.scale;  // ψ_p·n
+          const double psi = fv.stressNormal(dp.localDof, q) / dp.scale;  // ψ_p·n_F
           p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), n.data(), cap) * psi;
           p.weight += fv.weight(q) * psi;
         }
+        minRelativeWeight = std::min(minRelativeWeight, p.weight / area);
         points_.push_back(p);
       }
     }
   }
+  // The contact conditions hold at the points; the load is Σ_p ∫_F L_p σ_N(p). With a negative
+  // weight ∫_F L_p, tractions that are non-positive at every point can pull on average, and the
+  // solver returns nonsense (degree 2 on the equispaced lattice did: a force of −40404). Reject
+  // such a degree on every rank together.
+  double globalMin = 1.0;
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MIN, 1, &minRelativeWeight, &globalMin);
+  SC_THROW_IF(globalMin <= 1e-10, core::InputError,
+              "'Discretization/Degree' = " << space.degree() << " in " << d
+                  << "D: a contact point of RT_" << space.degree()
+                  << " has a non-positive quadrature weight (min ∫_F L_p / |F| = " << globalMin
+                  << "), so point-wise contact conditions do not bound the load; contact is "
+                     "supported for the degrees listed in docs/contact.md ('Degree').");
 }
 
 ActiveSetSolver::~ActiveSetSolver() = default;

@@ -1,20 +1,34 @@
 #pragma once
-// Rigid obstacles (DESIGN §3): the gap g(p) is the distance from p to the obstacle along the
-// face's outward normal n. A ray parallel to the obstacle or hitting it behind p is a miss and
-// gets a finite cap (never ∞ or a negative value: c·G is formed), so such points stay free.
-// A sphere or cylinder implements the same interface.
+// Rigid obstacles (DESIGN §3, docs/contact.md "Contact model"). A contact point measures its gap
+// to the obstacle along the unit normal of its contact frame: the obstacle's normal (the exact
+// non-penetration direction for a rigid plane, the default) or the body's outward face normal
+// (the talk's literal linearisation). A point behind the obstacle surface (an initial overlap)
+// has a negative gap, which the linearised Signorini problem handles. Only a ray (nearly)
+// parallel to the obstacle, or pointing away from it, misses: it gets a finite cap (never ∞,
+// since c·G is formed), so such points stay free.
 #include <array>
 #include <memory>
+#include <vector>
 
 #include <sc/core/ProblemData.hpp>
+
+namespace sc::mesh {
+class SimplexMesh;
+}
 
 namespace sc::contact {
 
 class Obstacle {
 public:
   virtual ~Obstacle() = default;
-  /// Distance along the unit vector n from x to the obstacle, or `cap` if the ray misses it.
+  /// Signed distance from x to the obstacle along the unit vector n (negative: x is behind the
+  /// obstacle's surface), or `cap` if the ray misses it.
   virtual double gap(const double* x, const double* n, double cap) const = 0;
+  /// The obstacle-normal frame's normal at x: the unit vector from the body towards the
+  /// obstacle (for a plane, minus the plane's normal, which points towards the body).
+  virtual std::array<double, 3> contactNormal(const double* x) const = 0;
+  /// Signed height of x above the obstacle surface (positive on the body's side).
+  virtual double height(const double* x) const = 0;
 };
 
 /// The plane through `point` with unit normal `normal` pointing towards the body.
@@ -22,6 +36,8 @@ class PlaneObstacle : public Obstacle {
 public:
   PlaneObstacle(int dim, const std::vector<double>& point, const std::vector<double>& normal);
   double gap(const double* x, const double* n, double cap) const override;
+  std::array<double, 3> contactNormal(const double* x) const override;
+  double height(const double* x) const override;
 
 private:
   int dim_;
@@ -29,5 +45,17 @@ private:
 };
 
 std::unique_ptr<Obstacle> createObstacle(const core::ContactSettings& settings, int dim);
+
+/// Largest initial overlap accepted, as a fraction of the body's extent along the obstacle
+/// normal: beyond it the small-strain, linearised contact model does not apply.
+inline constexpr double kMaxInitialOverlap = 0.1;
+
+/// Checks the obstacle against the body before any solve (also for --check): throws InputError
+/// naming 'Contact/Obstacle normal' if the body lies on the obstacle's far side (the normal
+/// points away from the body: the solver would "converge" with nothing in contact), and naming
+/// 'Contact/Obstacle point' if the contact boundary overlaps the obstacle by more than
+/// kMaxInitialOverlap of the body's extent. `contactBoundaries`: boundary names of Type Contact.
+void checkObstacle(const mesh::SimplexMesh& mesh, const core::ContactSettings& settings,
+                   const std::vector<std::string>& contactBoundaries);
 
 }  // namespace sc::contact

@@ -72,12 +72,17 @@ struct BoundaryConditions {
 };
 
 enum class FrictionLaw { None, Tresca, Coulomb };
+/// The contact frame at a contact point (DESIGN §3, docs/contact.md "Contact model"): gap,
+/// normal stress and friction along the obstacle's normal (exact non-penetration direction for a
+/// rigid plane) or along the body's outward face normal (the talk's literal linearisation).
+enum class ContactFrame { ObstacleNormal, BodyNormal };
 
 /// "Contact": the rigid obstacle and the friction law (DESIGN §3).
 struct ContactSettings {
   std::string obstacle = "Plane";
   std::vector<double> obstaclePoint;   ///< a point of the plane
   std::vector<double> obstacleNormal;  ///< unit normal of the plane, pointing into the body
+  ContactFrame frame = ContactFrame::ObstacleNormal;
   FrictionLaw frictionLaw = FrictionLaw::None;
   double frictionCoefficient = 0.0;
   double trescaBound = 0.0;

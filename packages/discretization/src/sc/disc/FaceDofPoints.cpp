@@ -30,7 +30,7 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
   SC_THROW_IF(np != static_cast<int>(faceDofs.size()), core::InternalError,
               "face lattice has " << np << " points for " << faceDofs.size() << " face DOFs");
   View param("param", np, d - 1), ref("ref", np, d);
-  Intrepid2::PointTools::getLattice(param, sideTopo, order, 1, Intrepid2::POINTTYPE_EQUISPACED);
+  Intrepid2::PointTools::getLattice(param, sideTopo, order, 1, si.rtPoints);
   Intrepid2::CellTools<Device>::mapToReferenceSubcell(ref, param, d - 1, side, si.topology);
   const int nRT = si.rt->getCardinality();
   View vals("vals", nRT, np, d), oriented("oriented", 1, nRT, np, d);

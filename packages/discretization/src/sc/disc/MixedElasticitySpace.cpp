@@ -19,14 +19,20 @@ namespace sc::disc {
 
 MixedElasticitySpace::Impl::Impl(int d, int k) : dim(d)
 {
+  // The contact method constrains the normal traction at the face DOF points, so the points'
+  // interpolatory weights ∫_F L_p must be positive (docs/contact.md "Degree"). The equispaced open
+  // lattice has negative weights from k = 2 on (the middle of 1/4, 1/2, 3/4 has −1/3): a
+  // point-wise non-positive traction could then pull on average. Gauss–Lobatto (warp-blend) points
+  // keep them positive. k = 1 keeps the equispaced points 1/3, 2/3 it was verified with.
+  rtPoints = k == 1 ? Intrepid2::POINTTYPE_EQUISPACED : Intrepid2::POINTTYPE_WARPBLEND;
   if (d == 2) {
     topology = shards::CellTopology(shards::getCellTopologyData<shards::Triangle<3>>());
     // Intrepid2's HDIV order n spans RT_{n-1} (DESIGN §2): order k+1 for RT_k.
-    rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TRI_In_FEM<Device, double, double>(k + 1));
+    rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TRI_In_FEM<Device, double, double>(k + 1, rtPoints));
     pk = Teuchos::rcp(new Intrepid2::Basis_HGRAD_TRI_Cn_FEM<Device, double, double>(k));
   } else {
     topology = shards::CellTopology(shards::getCellTopologyData<shards::Tetrahedron<4>>());
-    rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TET_In_FEM<Device, double, double>(k + 1));
+    rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TET_In_FEM<Device, double, double>(k + 1, rtPoints));
     pk = Teuchos::rcp(new Intrepid2::Basis_HGRAD_TET_Cn_FEM<Device, double, double>(k));
   }
   // A side's vertices are all but one; the missing one names the mesh's local face.

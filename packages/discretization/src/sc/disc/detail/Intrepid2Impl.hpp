@@ -5,6 +5,7 @@
 
 #include <Intrepid2_Basis.hpp>
 #include <Intrepid2_Orientation.hpp>
+#include <Intrepid2_Types.hpp>
 #include <Kokkos_DynRankView.hpp>
 #include <Shards_CellTopology.hpp>
 #include <Teuchos_RCP.hpp>
@@ -21,7 +22,11 @@ struct MixedElasticitySpace::Impl {
   Impl(int dim, int degree);
   int dim;
   shards::CellTopology topology;
-  Teuchos::RCP<Basis> rt;  ///< RT_k: Intrepid2 HDIV In_FEM of order k+1 (equispaced lattice)
+  /// RT_k: Intrepid2 HDIV In_FEM of order k+1. Its face DOFs are normal fluxes at a lattice of
+  /// the face: equispaced for k = 1, warp-blend (Gauss–Lobatto in 2D) for k >= 2, where the
+  /// interpolatory face weights of the equispaced open lattice change sign (docs/contact.md).
+  Teuchos::RCP<Basis> rt;
+  Intrepid2::EPointType rtPoints = Intrepid2::POINTTYPE_EQUISPACED;
   Teuchos::RCP<Basis> pk;  ///< P_k Lagrange: DP_k element-locally, CP_k globally
   /// Intrepid2 side ordinal <-> mesh local face (the face opposite local vertex i).
   std::array<int, 4> sideToMeshFace{}, meshFaceToSide{};
