@@ -48,6 +48,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   if (boundaryConditions_.hasContact())
     contact_ = core::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
+  if (boundaryConditions_.hasContact())
+    contact::checkContactDegree(dim, discretization_.degree);
   adaptivity_ = core::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
 

@@ -69,6 +69,11 @@ struct ContactStatistics {
   std::vector<int> changesPerIteration;
 };
 
+/// Throws InputError naming 'Discretization/Degree' if contact at this degree and dimension is
+/// not supported: the RT_k face DOF points must have positive weights ∫_F L_p (docs/contact.md,
+/// "Degree"). Supported: k = 1..4 in 2D, k = 1, 2 in 3D. Call it before any work (--check too).
+void checkContactDegree(int dim, int degree);
+
 class ActiveSetSolver {
 public:
   using CrsMatrix = Tpetra::CrsMatrix<>;

@@ -1,5 +1,6 @@
 #include "sc/disc/FaceDofPoints.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Intrepid2_CellTools.hpp>
@@ -9,6 +10,7 @@
 #include <sc/core/Error.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
+#include "sc/disc/ElementValues.hpp"
 #include "sc/disc/MixedElasticitySpace.hpp"
 #include "sc/disc/detail/AffineMap.hpp"
 #include "sc/disc/detail/Intrepid2Impl.hpp"
@@ -84,6 +86,38 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
     }
   }
   return points;
+}
+
+double minRelativeFaceDofWeight(int dim, int degree)
+{
+  // One reference simplex, all faces on one boundary part.
+  std::vector<double> x = dim == 2 ? std::vector<double>{0, 0, 1, 0, 0, 1}
+                                   : std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::vector<int> cells(dim + 1), faces, parts;
+  for (int v = 0; v <= dim; ++v)
+    cells[v] = v;
+  for (int f = 0; f <= dim; ++f) {  // the face opposite vertex f
+    for (int v = 0; v <= dim; ++v)
+      if (v != f)
+        faces.push_back(v);
+    parts.push_back(0);
+  }
+  auto mesh = Teuchos::rcp(new mesh::SimplexMesh(dim, x, cells, faces, parts, {"Boundary"},
+                                                 "reference simplex"));
+  const MixedElasticitySpace space(mesh, degree, std::vector<int>{0}, 0);
+  FaceValues fv(space, 2 * degree + 2);
+  double worst = 1e300;
+  for (int lf = 0; lf <= dim; ++lf) {
+    fv.reinit(0, lf);
+    const double area = mesh->faceMeasure(mesh->elementFaces(0)[lf]);
+    for (const auto& dp : stressFaceDofPoints(space, 0, lf)) {
+      double w = 0.0;
+      for (int q = 0; q < fv.numPoints(); ++q)
+        w += fv.weight(q) * fv.stressNormal(dp.localDof, q) / dp.scale;
+      worst = std::min(worst, w / area);
+    }
+  }
+  return worst;
 }
 
 }  // namespace sc::disc

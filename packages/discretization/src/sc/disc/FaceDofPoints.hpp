@@ -24,3 +24,11 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
                                               int localFace);
 
 }  // namespace sc::disc
+
+namespace sc::disc {
+/// min over the faces of the reference simplex and their RT_k face DOF points p of
+/// ∫_F L_p ds / |F|, where L_p is the Lagrange function of the normal trace at p (1 at p, 0 at
+/// the face's other DOF points). The ratio is invariant under affine maps, so it holds for every
+/// straight-sided mesh. Contact needs it positive (docs/contact.md, "Degree").
+double minRelativeFaceDofWeight(int dim, int degree);
+}  // namespace sc::disc

@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Hertz 2D in both contact frames (issue #11, docs/contact.md "Contact model").
+
+Runs build/apps/stresscontact/stresscontact on input/hertz2d_frictionless.xml and
+input/hertz2d.xml with local refinement towards the contact zone and writes
+docs/studies/contact_frames.csv: frame, degree, sweeps, nu, friction, DOFs, seconds, load P,
+half-width a (outermost and from the area), peak pressure p0, Hertz a and p0 from P, the
+staircase (max deviation of sigma_N from the line through its neighbours, inner 80%), the
+profile error against Hertz (inner 80%) and the stick half-width (Coulomb).
+
+Usage (from the repository root, after building):  python3 docs/studies/contact_frames.py
+"""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+APP = os.path.join(ROOT, "build", "apps", "stresscontact", "stresscontact")
+OUT = "/tmp/sc_contact_frames"
+E = 20600.0
+
+
+def run(deck, sets, tag):
+    out = os.path.join(OUT, tag)
+    cmd = [APP, os.path.join(ROOT, "input", deck), "--output", out, "--quiet"]
+    for s in sets:
+        cmd += ["--set", s]
+    t0 = time.time()
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    seconds = time.time() - t0
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    rows = list(csv.DictReader(open(os.path.join(out, "contact_cycle0.csv"))))
+    return summary["cycles"][-1], rows, seconds
+
+
+def profile_measures(rows, a, p0):
+    act = sorted((float(r["x"]), -float(r["sigma_n"])) for r in rows if r["status"] != "free")
+    stair = prof = 0.0
+    for i, (x, s) in enumerate(act):
+        if abs(x) >= 0.8 * a:
+            continue
+        prof = max(prof, abs(s - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))))
+        if 0 < i < len(act) - 1:
+            (xl, sl), (xr, sr) = act[i - 1], act[i + 1]
+            stair = max(stair, abs(s - (sl + (sr - sl) * (x - xl) / (xr - xl))))
+    return stair / p0, prof / p0
+
+
+def main():
+    if not os.path.exists(APP):
+        sys.exit("build the application first (scripts/build-and-test.sh): " + APP)
+    cases = []
+    for frame in ("Obstacle normal", "Body normal"):
+        for k, sweeps in ((1, 6), (1, 8), (1, 10), (2, 6), (2, 8)):
+            cases.append((frame, k, sweeps, 0.28, "None"))
+        for nu in (0.28, 0.4999):
+            cases.append((frame, 1, 8, nu, "Coulomb"))
+    header = ["frame", "degree", "sweeps", "nu", "friction", "dofs", "seconds", "P", "a",
+              "a_area", "p0", "a_hertz", "p0_hertz", "staircase_rel_p0", "profile_err_rel_p0",
+              "stick_half_width", "newton_steps"]
+    results = []
+    for frame, k, sweeps, nu, law in cases:
+        deck = "hertz2d_frictionless.xml" if law == "None" else "hertz2d.xml"
+        sets = ["Adaptivity/Cycles=0", "Contact/Frame=" + frame, "Discretization/Degree=%d" % k,
+                "Material/Poisson ratio=%g" % nu, "Mesh/Local refinement/Levels=%d" % sweeps,
+                "Mesh/Local refinement/Radius=0.12", "Mesh/Local refinement/Center={0, 0}"]
+        tag = "%s_k%d_s%d_nu%g_%s" % (frame.split()[0], k, sweeps, nu, law)
+        cyc, rows, seconds = run(deck, sets, tag)
+        c = cyc["contact"]
+        P = c["force"][1]
+        estar = E / (1 - nu * nu)
+        aH = math.sqrt(4 * P / (math.pi * estar))
+        p0H = 2 * P / (math.pi * aH)
+        stair, prof = profile_measures(rows, aH, p0H)
+        r = [frame, k, sweeps, nu, law, cyc["dofs"]["total"], round(seconds, 1), P,
+             c["half_width"], c["equivalent_half_width"], c["max_pressure"], aH, p0H, stair, prof,
+             c["stick_half_width"], c["newton_iterations"]]
+        results.append(r)
+        print(" ".join(str(v) for v in r), flush=True)
+    path = os.path.join(ROOT, "docs", "studies", "contact_frames.csv")
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(results)
+    print("wrote", path)
+
+
+if __name__ == "__main__":
+    main()
