@@ -66,6 +66,98 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
   return valid;
 }
 
+namespace {
+
+// Barycentric coordinates of y in the face with vertices v[0..d-1] (an edge or a triangle).
+std::array<double, 3> barycentric(const std::array<const double*, 3>& v, const double* y, int d)
+{
+  if (d == 2) {
+    double e[2] = {v[1][0] - v[0][0], v[1][1] - v[0][1]};
+    const double t = ((y[0] - v[0][0]) * e[0] + (y[1] - v[0][1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]);
+    return {1.0 - t, t, 0.0};
+  }
+  double e1[3], e2[3], r[3];
+  for (int i = 0; i < 3; ++i) {
+    e1[i] = v[1][i] - v[0][i];
+    e2[i] = v[2][i] - v[0][i];
+    r[i] = y[i] - v[0][i];
+  }
+  auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2), b1 = dot(r, e1), b2 = dot(r, e2);
+  const double det = a11 * a22 - a12 * a12;
+  const double l1 = (b1 * a22 - b2 * a12) / det, l2 = (a11 * b2 - a12 * b1) / det;
+  return {1.0 - l1 - l2, l1, l2};
+}
+
+// Multi-indices α (|α| = k) over `nv` barycentric coordinates, in a fixed order.
+std::vector<std::array<int, 3>> bernsteinIndices(int k, int nv)
+{
+  std::vector<std::array<int, 3>> out;
+  for (int a = k; a >= 0; --a)
+    if (nv == 2)
+      out.push_back({a, k - a, 0});
+    else
+      for (int b = k - a; b >= 0; --b)
+        out.push_back({a, b, k - a - b});
+  return out;
+}
+
+double bernstein(const std::array<int, 3>& alpha, const std::array<double, 3>& lambda, int k)
+{
+  double f = std::tgamma(k + 1.0);
+  for (int i = 0; i < 3; ++i)
+    f *= std::pow(lambda[i], alpha[i]) / std::tgamma(alpha[i] + 1.0);
+  return f;
+}
+
+// Inverse of a small dense matrix (row-major), Gauss–Jordan with partial pivoting.
+std::vector<double> invert(std::vector<double> a, int n)
+{
+  std::vector<double> inv(static_cast<std::size_t>(n) * n, 0.0);
+  for (int i = 0; i < n; ++i)
+    inv[i * n + i] = 1.0;
+  for (int c = 0; c < n; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < n; ++r)
+      if (std::abs(a[r * n + c]) > std::abs(a[piv * n + c]))
+        piv = r;
+    SC_THROW_IF(std::abs(a[piv * n + c]) < 1e-14, core::InternalError,
+                "singular Bernstein collocation matrix on a contact face");
+    for (int j = 0; j < n; ++j) {
+      std::swap(a[c * n + j], a[piv * n + j]);
+      std::swap(inv[c * n + j], inv[piv * n + j]);
+    }
+    const double d = a[c * n + c];
+    for (int j = 0; j < n; ++j) {
+      a[c * n + j] /= d;
+      inv[c * n + j] /= d;
+    }
+    for (int r = 0; r < n; ++r)
+      if (r != c) {
+        const double f = a[r * n + c];
+        for (int j = 0; j < n; ++j) {
+          a[r * n + j] -= f * a[c * n + j];
+          inv[r * n + j] -= f * inv[c * n + j];
+        }
+      }
+  }
+  return inv;
+}
+
+}  // namespace
+
+bool useBernsteinConstraints(int dim, int /*degree*/)
+{
+  // 2D: the DOF points' dual weights ℓ_p have non-negative moments against the face's
+  // barycentric coordinates (min 0 at k = 1, 0.067, 0.013, 0.017 at k = 2, 3, 4), so a
+  // non-negative linear gap has a non-negative weighted gap; the point constraints are verified
+  // against Hertz at k = 1..4. 3D: at k = 1 the moments reach 0 and at k = 2 the weights are
+  // small (0.042), and the point constraints left spurious contact outside the zone (active
+  // points up to 1.26 a with up to 14% of p0 on Hertz 3D, docs/contact.md): Bernstein
+  // coefficients, whose dual weights B_p are non-negative, remove it.
+  return dim == 3;
+}
+
 void checkContactDegree(int dim, int degree)
 {
   const double w = disc::minRelativeFaceDofWeight(dim, degree);
@@ -122,6 +214,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   for (const auto& name : contactBoundaries)
     contactIds.push_back(m.boundaryId(name));
   const bool obstacleFrame = settings.frame == core::ContactFrame::ObstacleNormal;
+  bernstein_ = useBernsteinConstraints(d, space.degree());
   double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
   disc::FaceValues fv(space, 2 * space.degree() + 2);
   for (int e : space.ownedElements()) {
@@ -160,25 +253,59 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
       }
       const double area = m.faceMeasure(f);
       const double hF = d == 2 ? area : std::sqrt(area);
+      const int nq = static_cast<int>(dofPoints.size());
+      ContactFace cf;
+      cf.m = nq;
       for (const auto& dp : dofPoints) {
+        std::array<long long, 3> g{};
+        for (int i = 0; i < d; ++i)
+          g[i] = space.elementDofs(e)[space.stressOffset(i) + dp.localDof];
+        cf.gids.push_back(g);
+        cf.scale.push_back(dp.scale);
+        cf.meanScale += std::abs(dp.scale) / nq;
+      }
+      // V(q, p): the constraint basis at the DOF points — the identity for point constraints,
+      // the Bernstein polynomials of the face (via barycentric coordinates) otherwise.
+      std::array<const double*, 3> fvx{};
+      for (int i = 0; i < d; ++i)
+        fvx[i] = m.vertex(m.faceVertices(f)[i]);
+      const auto alphas = bernsteinIndices(space.degree(), d);
+      cf.V.assign(static_cast<std::size_t>(nq) * nq, 0.0);
+      for (int q = 0; q < nq; ++q)
+        for (int pp = 0; pp < nq; ++pp)
+          cf.V[q * nq + pp] = bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].x.data(), d),
+                                                     space.degree())
+                                         : (q == pp ? 1.0 : 0.0);
+      cf.Vinv = bernstein_ ? invert(cf.V, nq) : cf.V;
+      for (int pp = 0; pp < nq; ++pp) {
         ContactPoint p;
         p.face = f;
-        for (int i = 0; i < d; ++i)
-          p.gids[i] = space.elementDofs(e)[space.stressOffset(i) + dp.localDof];
-        p.x = dp.x;
+        p.block = static_cast<int>(faces_.size());
+        p.index = pp;
+        if (bernstein_) {
+          for (int i = 0; i < d; ++i)
+            for (int c = 0; c < d; ++c)
+              p.x[c] += alphas[pp][i] / static_cast<double>(space.degree()) * fvx[i][c];
+        } else {
+          p.x = dofPoints[pp].x;
+        }
         p.n = n;
         p.t1 = t1;
         p.t2 = t2;
-        p.scale = dp.scale;
         p.c = penaltyFactor_ * twoMu / (hF * area);
+        // The dual weight w_p = Σ_q V(q, p) ℓ_q (ℓ_q = ψ_q·n_F / s_q, the Lagrange function of the
+        // normal trace at q): ℓ_p itself, or B_p. Weighted gap with face quadrature (not lumped).
         for (int q = 0; q < fv.numPoints(); ++q) {
-          const double psi = fv.stressNormal(dp.localDof, q) / dp.scale;  // ψ_p·n_F
-          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), n.data(), cap) * psi;
-          p.weight += fv.weight(q) * psi;
+          double w = 0.0;
+          for (int j = 0; j < nq; ++j)
+            w += cf.V[j * nq + pp] * fv.stressNormal(dofPoints[j].localDof, q) / dofPoints[j].scale;
+          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), n.data(), cap) * w;
+          p.weight += fv.weight(q) * w;
         }
         minRelativeWeight = std::min(minRelativeWeight, p.weight / area);
         points_.push_back(p);
       }
+      faces_.push_back(std::move(cf));
     }
   }
   // The contact conditions hold at the points; the load is Σ_p ∫_F L_p σ_N(p). With a negative
@@ -235,18 +362,29 @@ void ActiveSetSolver::evaluate(const CrsMatrix& K, const MultiVector& b, const M
   auto xv = x.getData(0);
   auto rv = R.getData(0);
   const auto& map = *x.getMap();
+  auto dot = [](const double* a, const std::array<double, 3>& v) {
+    return a[0] * v[0] + a[1] * v[1] + a[2] * v[2];
+  };
   for (auto& p : points_) {
+    const ContactFace& cf = faces_[p.block];
+    // τ_p = Σ_q V⁻¹(p, q) t(x_q), t(x_q) = s_q x_q;  ρ_p = Σ_q V(q, p) R_q / s_q.
     double t[3] = {0, 0, 0}, r[3] = {0, 0, 0};
-    for (int i = 0; i < d; ++i) {
-      const auto lid = map.getLocalElement(p.gids[i]);
-      t[i] = p.scale * xv[lid];
-      r[i] = rv[lid] / p.scale;
+    for (int q = 0; q < cf.m; ++q) {
+      const double vinv = cf.Vinv[p.index * cf.m + q], v = cf.V[q * cf.m + p.index];
+      if (vinv == 0.0 && v == 0.0)
+        continue;
+      for (int i = 0; i < d; ++i) {
+        const auto lid = map.getLocalElement(cf.gids[q][i]);
+        t[i] += vinv * cf.scale[q] * xv[lid];
+        r[i] += v * rv[lid] / cf.scale[q];
+      }
     }
-    auto dot = [&](const double* a, const std::array<double, 3>& v) {
-      return a[0] * v[0] + a[1] * v[1] + a[2] * v[2];
-    };
     p.sigmaN = dot(t, p.n);
     p.rN = dot(r, p.n);
+    double tq[3] = {0, 0, 0};
+    for (int i = 0; i < d; ++i)
+      tq[i] = cf.scale[p.index] * xv[map.getLocalElement(cf.gids[p.index][i])];
+    p.sigmaNAtDofPoint = dot(tq, p.n);
     p.sigmaT = {dot(t, p.t1), d == 3 ? dot(t, p.t2) : 0.0};
     p.rT = {dot(r, p.t1), d == 3 ? dot(r, p.t2) : 0.0};
   }
@@ -320,127 +458,135 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
   const auto& rowMap = *K.getRowMap();
   const auto& colMap = *K.getColMap();
   using LO = CrsMatrix::local_ordinal_type;
-  for (const auto& p : points_) {
-    LO lid[3];
-    std::vector<std::vector<LO>> cols(d);
-    std::vector<std::vector<double>> vals(d);
-    for (int i = 0; i < d; ++i) {
-      lid[i] = rowMap.getLocalElement(p.gids[i]);
-      CrsMatrix::local_inds_host_view_type inds;
-      CrsMatrix::values_host_view_type v;
-      K.getLocalRowView(lid[i], inds, v);
-      cols[i].assign(inds.data(), inds.data() + inds.extent(0));
-      vals[i].assign(v.data(), v.data() + v.extent(0));
-    }
-    auto entry = [&](int row, LO col) {
-      for (std::size_t k = 0; k < cols[row].size(); ++k)
-        if (cols[row][k] == col)
-          return vals[row][k];
-      return 0.0;
+  // The points of each face block replace the face's rows together: new row (r, p) goes into the
+  // slot of DOF row (q = p, i = r). Every row is
+  //   Σ_i α_i ρ_{i,p} + Σ_i β_i τ_{i,p} = γ,
+  // with ρ_{i,p} = Σ_q V(q,p)(K x − b)_{q,i}/s_q (dual: rows of K) and τ_{i,p} = Σ_q V⁻¹(p,q) s_q x_{q,i}
+  // (traction: columns of the face DOFs), written in the frame (n, t1[, t2]).
+  std::vector<int> first(faces_.size(), -1);
+  for (std::size_t k = 0; k < points_.size(); ++k)
+    if (first[points_[k].block] < 0)
+      first[points_[k].block] = static_cast<int>(k);
+  for (std::size_t blk = 0; blk < faces_.size(); ++blk) {
+    const ContactFace& cf = faces_[blk];
+    const int m = cf.m;
+    // Rows of the face DOFs on one common column pattern (they are the DOFs of one element).
+    std::vector<std::vector<LO>> lid(m, std::vector<LO>(d));
+    std::vector<LO> pattern;
+    std::vector<std::vector<double>> rowVals(static_cast<std::size_t>(m) * d);
+    std::vector<std::vector<LO>> colLid(m, std::vector<LO>(d));
+    for (int q = 0; q < m; ++q)
+      for (int i = 0; i < d; ++i) {
+        lid[q][i] = rowMap.getLocalElement(cf.gids[q][i]);
+        colLid[q][i] = colMap.getLocalElement(cf.gids[q][i]);
+        CrsMatrix::local_inds_host_view_type inds;
+        CrsMatrix::values_host_view_type v;
+        K.getLocalRowView(lid[q][i], inds, v);
+        if (pattern.empty())
+          pattern.assign(inds.data(), inds.data() + inds.extent(0));
+        SC_THROW_IF(inds.extent(0) != pattern.size() ||
+                        !std::equal(pattern.begin(), pattern.end(), inds.data()),
+                    core::InternalError, "the stress rows of contact face " << points_[first[blk]].face
+                                             << " have different column patterns");
+        rowVals[q * d + i].assign(v.data(), v.data() + v.extent(0));
+      }
+    auto position = [&](LO col) {
+      const auto it = std::find(pattern.begin(), pattern.end(), col);
+      SC_THROW_IF(it == pattern.end(), core::InternalError, "a contact face DOF is not in its row");
+      return static_cast<std::size_t>(it - pattern.begin());
     };
-    // Frame vectors per equation: row 0 normal, rows 1.. tangential.
-    const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
-    // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (DESIGN §3), with
-    // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
-    // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
-    //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
-    // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
-    // been evaluated in contact yet).
-    const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
-    double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
-    bool hswRow = false;
-    if (hsw) {
-      const double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]};
-      const double zn = std::hypot(z[0], z[1]);
-      const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
-      if (zn > 0.0 && bound > 0.0) {
-        hswRow = true;
-        const double tn = std::hypot(p.sigmaT[0], p.sigmaT[1]);
-        const double shrink = tn > bound ? bound / tn : 1.0;
-        const double st[2] = {shrink * p.sigmaT[0], shrink * p.sigmaT[1]};
-        for (int j = 0; j < 2; ++j) {
-          for (int l = 0; l < 2; ++l)
-            hswM[j][l] = (st[j] * p.direction[l] - (j == l ? bound : 0.0)) / zn;
-          hswRhs[j] = st[j] - bound * p.direction[j] - mu * p.c * p.direction[j] * p.gap;
+    for (int pp = 0; pp < m; ++pp) {
+      const ContactPoint& p = points_[first[blk] + pp];
+      // Frame vectors per equation: row 0 normal, rows 1.. tangential.
+      const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
+      // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (DESIGN §3), with
+      // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
+      // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
+      //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
+      // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
+      // been evaluated in contact yet).
+      const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
+      double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
+      bool hswRow = false;
+      if (hsw) {
+        const double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]};
+        const double zn = std::hypot(z[0], z[1]);
+        const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
+        if (zn > 0.0 && bound > 0.0) {
+          hswRow = true;
+          const double tn = std::hypot(p.sigmaT[0], p.sigmaT[1]);
+          const double shrink = tn > bound ? bound / tn : 1.0;
+          const double st[2] = {shrink * p.sigmaT[0], shrink * p.sigmaT[1]};
+          for (int j = 0; j < 2; ++j) {
+            for (int l = 0; l < 2; ++l)
+              hswM[j][l] = (st[j] * p.direction[l] - (j == l ? bound : 0.0)) / zn;
+            hswRhs[j] = st[j] - bound * p.direction[j] - mu * p.c * p.direction[j] * p.gap;
+          }
         }
       }
-    }
-    for (int r = 0; r < d; ++r) {
-      const auto& dir = *frame[r];
-      std::vector<double> newVals(cols[r].size(), 0.0);
-      double newRhs = 0.0;
-      enum { KeepRow, Traction } kind = Traction;
-      std::array<double, 3> coeff{0, 0, 0};  // traction row: Σ_i coeff_i x_{g_i} = newRhs
-      if (r == 0) {
-        if (p.status == PointStatus::Free) {
-          for (int i = 0; i < d; ++i)
-            coeff[i] = p.scale * dir[i];  // σ_N = 0
-        } else {
-          kind = KeepRow;  // r_N = G
-          newRhs = p.scale * p.gap;
-        }
-      } else {
-        const int k = r - 1;
-        if (p.status == PointStatus::Stick) {
-          kind = KeepRow;  // r_T = 0
-        } else if (p.status == PointStatus::Slip && friction) {
-          if (tresca) {
-            for (int i = 0; i < d; ++i)
-              coeff[i] = p.scale * dir[i];  // σ_T,k = s ξ_k
-            newRhs = trescaBound(p) * p.direction[k];
+      for (int r = 0; r < d; ++r) {
+        const auto& dir = *frame[r];
+        std::array<double, 3> alpha{0, 0, 0}, beta{0, 0, 0};
+        double gamma = 0.0;
+        if (r == 0) {
+          if (p.status == PointStatus::Free) {
+            beta = dir;  // σ_N = 0
           } else {
-            for (int i = 0; i < d; ++i)
-              coeff[i] = p.scale * (dir[i] + mu * p.direction[k] * p.n[i]);  // σ_T,k + μ ξ_k σ_N = 0
+            alpha = dir;  // r_N = G
+            gamma = p.gap;
           }
         } else {
-          for (int i = 0; i < d; ++i)
-            coeff[i] = p.scale * dir[i];  // σ_T = 0 (free or frictionless)
-        }
-      }
-      if (r > 0 && hswRow) {
-        // Row j of the HSW system: traction part on the point's DOFs, K-row part from r_T, r_N
-        // (r = (K x − b)/s_p per frame direction), all scaled like a traction row.
-        const int j = r - 1;
-        std::array<double, 3> tractionDir{0, 0, 0}, rowDir{0, 0, 0};
-        for (int i = 0; i < d; ++i) {
-          tractionDir[i] = (1.0 + hswM[j][j]) * (j == 0 ? p.t1[i] : p.t2[i]) +
-                           hswM[j][1 - j] * (j == 0 ? p.t2[i] : p.t1[i]) +
-                           mu * p.direction[j] * p.n[i];
-          rowDir[i] = -p.c / p.scale *
-                      (hswM[j][0] * p.t1[i] + hswM[j][1] * p.t2[i] + mu * p.direction[j] * p.n[i]);
-        }
-        const double w = std::abs(entry(r, colMap.getLocalElement(p.gids[r]))) / std::abs(p.scale);
-        newRhs = hswRhs[j];
-        for (std::size_t c = 0; c < cols[r].size(); ++c) {
-          for (int i = 0; i < d; ++i) {
-            newVals[c] += rowDir[i] * entry(i, cols[r][c]);
-            if (cols[r][c] == colMap.getLocalElement(p.gids[i]))
-              newVals[c] += p.scale * tractionDir[i];
+          const int k = r - 1;
+          if (hswRow) {
+            // Row j of the HSW system: traction part and dual part (r = ρ in the frame).
+            for (int i = 0; i < d; ++i) {
+              beta[i] = (1.0 + hswM[k][k]) * (k == 0 ? p.t1[i] : p.t2[i]) +
+                        hswM[k][1 - k] * (k == 0 ? p.t2[i] : p.t1[i]) + mu * p.direction[k] * p.n[i];
+              alpha[i] = -p.c * (hswM[k][0] * p.t1[i] + hswM[k][1] * p.t2[i] + mu * p.direction[k] * p.n[i]);
+            }
+            gamma = hswRhs[k];
+          } else if (p.status == PointStatus::Stick) {
+            alpha = dir;  // r_T = 0
+          } else if (p.status == PointStatus::Slip && friction) {
+            if (tresca) {
+              beta = dir;  // σ_T,k = s ξ_k
+              gamma = trescaBound(p) * p.direction[k];
+            } else {
+              for (int i = 0; i < d; ++i)
+                beta[i] = dir[i] + mu * p.direction[k] * p.n[i];  // σ_T,k + μ ξ_k σ_N = 0
+            }
+          } else {
+            beta = dir;  // σ_T = 0 (free or frictionless)
           }
-          newVals[c] *= w;
         }
-        for (int i = 0; i < d; ++i)
-          newRhs += rowDir[i] * bData[lid[i]];
-        newRhs *= w;
-      } else if (kind == KeepRow) {
-        for (std::size_t c = 0; c < cols[r].size(); ++c)
-          for (int i = 0; i < d; ++i)
-            newVals[c] += dir[i] * entry(i, cols[r][c]);
-        for (int i = 0; i < d; ++i)
-          newRhs += dir[i] * bData[lid[i]];
-      } else {
-        // A traction row (σ·e = value) is rescaled to the size of the row it replaces (its
-        // A-block diagonal), so that the system's rows stay comparable under any E.
-        const double w = std::abs(entry(r, colMap.getLocalElement(p.gids[r]))) / std::abs(p.scale);
-        for (std::size_t c = 0; c < cols[r].size(); ++c)
-          for (int i = 0; i < d; ++i)
-            if (cols[r][c] == colMap.getLocalElement(p.gids[i]))
-              newVals[c] += w * coeff[i];
-        newRhs *= w;
+        const bool traction = beta[0] != 0.0 || beta[1] != 0.0 || beta[2] != 0.0;
+        std::vector<double> newVals(pattern.size(), 0.0);
+        double newRhs = gamma;
+        for (int q = 0; q < m; ++q) {
+          const double v = cf.V[q * m + pp] / cf.scale[q], vinv = cf.Vinv[pp * m + q] * cf.scale[q];
+          for (int i = 0; i < d; ++i) {
+            if (alpha[i] != 0.0 && v != 0.0) {
+              const auto& row = rowVals[q * d + i];
+              for (std::size_t c = 0; c < pattern.size(); ++c)
+                newVals[c] += alpha[i] * v * row[c];
+              newRhs += alpha[i] * v * bData[lid[q][i]];
+            }
+            if (beta[i] != 0.0 && vinv != 0.0)
+              newVals[position(colLid[q][i])] += beta[i] * vinv;
+          }
+        }
+        // Scale to the size of the row the new one replaces: a dual row (combination of K rows
+        // over s) by the mean |s_q|; a row with a traction part by |K_diag|/mean |s_q|, so that the
+        // system's rows stay comparable under any E.
+        const LO slot = lid[pp][r];
+        const double w = traction ? std::abs(rowVals[pp * d + r][position(colLid[pp][r])]) / cf.meanScale
+                                  : cf.meanScale;
+        for (double& v : newVals)
+          v *= w;
+        A->replaceLocalValues(slot, Teuchos::ArrayView<const LO>(pattern),
+                              Teuchos::ArrayView<const double>(newVals));
+        rhsData[slot] = w * newRhs;
       }
-      A->replaceLocalValues(lid[r], Teuchos::ArrayView<const LO>(cols[r]),
-                            Teuchos::ArrayView<const double>(newVals));
-      rhsData[lid[r]] = newRhs;
     }
   }
   A->fillComplete(K.getDomainMap(), K.getRangeMap());

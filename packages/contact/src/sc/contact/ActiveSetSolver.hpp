@@ -44,19 +44,27 @@ class Obstacle;
 enum class PointStatus { Free = 0, Stick = 1, Slip = 2 };
 std::string toString(PointStatus s);
 
+/// One contact constraint: a coefficient of the normal traction on a contact face (DESIGN §3,
+/// docs/contact.md "Constraint points"). Either a face DOF point p (the coefficient is the
+/// traction σn(p), the dual weight is its Lagrange function ℓ_p) or, where the DOF points'
+/// interpolatory rule cannot keep the weighted gap of a non-negative linear gap non-negative
+/// (3D, 2D k = 3), a Bernstein coefficient B_p of the face (non-negative dual weight B_p).
 struct ContactPoint {
-  std::array<long long, 3> gids{};  ///< the d row DOFs at this point
   int face = -1;                     ///< mesh face
-  std::array<double, 3> x{};
+  int block = -1;                    ///< index of its face block in the solver (internal)
+  int index = -1;                    ///< index within the face block
+  std::array<double, 3> x{};         ///< the DOF point, or the Bernstein control point
   std::array<double, 3> n{}, t1{}, t2{};
-  double scale = 0.0;    ///< s_p: traction = scale × coefficient
-  double gap = 0.0;      ///< weighted gap G_p = ∫_F g ψ_p·n ds
-  double weight = 0.0;   ///< ∫_F ψ_p·n ds (for the resultant force)
+  double gap = 0.0;      ///< weighted gap G_p = ∫_F g w_p ds (w_p = ℓ_p or B_p)
+  double weight = 0.0;   ///< ∫_F w_p ds (for the resultant force)
   double c = 0.0;        ///< semismooth Newton constant 2μ/(h_F |F|)
   // State and results.
   PointStatus status = PointStatus::Free;
   std::array<double, 2> direction{};  ///< slip direction ξ in (t1, t2)
   double sigmaN = 0.0, rN = 0.0;
+  /// σ_N at the face's DOF point with this index (= sigmaN for point constraints): the traction
+  /// trace's value, where a Bernstein coefficient (a control value) can overshoot.
+  double sigmaNAtDofPoint = 0.0;
   double frictionBound = 0.0;  ///< s_p of the Coulomb fixed point (a Tresca bound per point)
   std::array<double, 2> sigmaT{}, rT{};
 };
@@ -73,6 +81,10 @@ struct ContactStatistics {
 /// not supported: the RT_k face DOF points must have positive weights ∫_F L_p (docs/contact.md,
 /// "Degree"). Supported: k = 1..4 in 2D, k = 1, 2 in 3D. Call it before any work (--check too).
 void checkContactDegree(int dim, int degree);
+
+/// Whether the contact constraints of this dimension and degree act on the Bernstein
+/// coefficients of each face's traction (non-negative dual weights) instead of the DOF points.
+bool useBernsteinConstraints(int dim, int degree);
 
 class ActiveSetSolver {
 public:
@@ -120,8 +132,20 @@ private:
   Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs,
                                          const MultiVector& b) const;
 
+  /// The RT face DOFs of one contact face and the map between their point values and the
+  /// face's constraint coefficients: traction t(x_q) = Σ_p V(q,p) τ_p, dual ρ_p = Σ_q V(q,p) r_q.
+  struct ContactFace {
+    int m = 0;                                   ///< DOF points (= constraint coefficients)
+    std::vector<std::array<long long, 3>> gids;  ///< per point q: the d row DOFs
+    std::vector<double> scale;                   ///< s_q: traction = s_q × coefficient
+    std::vector<double> V, Vinv;                 ///< m × m, row-major V[q*m + p]
+    double meanScale = 0.0;                      ///< mean |s_q|
+  };
+
   const disc::MixedElasticitySpace& space_;
   core::ContactSettings settings_;
+  bool bernstein_ = false;  ///< constraints on Bernstein coefficients (else on DOF points)
+  std::vector<ContactFace> faces_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::unique_ptr<Obstacle> obstacle_;
   std::vector<ContactPoint> points_;

@@ -70,7 +70,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
       const double ti = p.sigmaN * p.n[i] + p.sigmaT[0] * p.t1[i] + p.sigmaT[1] * p.t2[i];
       local[i] += ti * p.weight;
     }
-    localMax = std::max(localMax, -p.sigmaN);
+    localMax = std::max(localMax, -p.sigmaNAtDofPoint);  // the trace at the DOF points
     ++counts[static_cast<int>(p.status)];
     if (p.status != PointStatus::Free) {
       local[3] += 1.0;

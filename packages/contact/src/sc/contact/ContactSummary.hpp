@@ -18,7 +18,7 @@ namespace sc::contact {
 
 struct ContactSummary {
   std::array<double, 3> force{};  ///< ∫_ΓC σn ds (vector resultant)
-  double maxPressure = 0.0;       ///< max over points of −σ_N (≥ 0)
+  double maxPressure = 0.0;       ///< max over the face DOF points of −σ_N (≥ 0)
   double zoneSize = 0.0;          ///< half-width (2D) or radius (3D) of the contact zone (outermost)
   double stickZoneSize = 0.0;     ///< the same for the stick zone (0 without friction)
   double equivalentZoneSize = 0.0;       ///< from the zone's area: A/2 (2D), √(A/π) (3D)
