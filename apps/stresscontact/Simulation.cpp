@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <numeric>
 #include <iomanip>
@@ -104,8 +106,43 @@ void Simulation::setupMesh()
                   << comm_->getSize() << " MPI ranks: make 'Mesh/Initial mesh size' smaller, add "
                   << "'Mesh/Uniform refinements', or run on at most " << mesh_->numElements()
                   << " ranks.");
+  warnIfLargeDisplacement();
   progress_.report("mesh", std::to_string(mesh_->numElements()) + " elements, " +
                                std::to_string(mesh_->numVertices()) + " vertices");
+}
+
+void Simulation::warnIfLargeDisplacement() const
+{
+  // The model is linear (small strain): a prescribed displacement that is not small against
+  // the body is outside its range. Warn, on rank 0, and go on (issue #12, item 8).
+  double uMax = 0.0;
+  std::string where;
+  for (const auto& bc : boundaryConditions_.conditions) {
+    if (bc.type != core::BoundaryType::Displacement || bc.fromExactSolution)
+      continue;
+    double n2 = 0.0;
+    for (double v : bc.value)
+      n2 += v * v;
+    if (std::sqrt(n2) > uMax)
+      uMax = std::sqrt(n2), where = bc.boundary;
+  }
+  const int dim = mesh_->dim();
+  const auto& x = mesh_->coordinates();
+  double diag2 = 0.0;
+  for (int d = 0; d < dim; ++d) {
+    double lo = x.empty() ? 0.0 : x[d], hi = lo;
+    for (std::size_t i = d; i < x.size(); i += dim)
+      lo = std::min(lo, x[i]), hi = std::max(hi, x[i]);
+    diag2 += (hi - lo) * (hi - lo);
+  }
+  const double size = std::sqrt(diag2);
+  if (comm_->getRank() == 0 && size > 0.0 && uMax > kLargeDisplacementFraction * size)
+    std::cerr << "stresscontact: warning: the displacement prescribed on '" << where << "' ("
+              << uMax << ") is " << std::lround(100.0 * uMax / size)
+              << "% of the size of the body (" << size << ", the diagonal of its bounding box); "
+              << "the model is linear elasticity with small strains, valid for displacements "
+              << "small against the body (the warning starts at "
+              << 100.0 * kLargeDisplacementFraction << "%)." << std::endl;
 }
 
 void Simulation::refineMesh()
