@@ -15,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 namespace sc::io {
@@ -121,6 +123,27 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
   if (comm.getRank() != 0)
     removed.assign(static_cast<std::size_t>(count), std::string());
   return removed;
+}
+
+void checkRoomForFile(const std::string& directory, const std::string& path,
+                      unsigned long long bytes)
+{
+  auto mb = [](unsigned long long b) { return std::to_string((b + (1ull << 20) - 1) >> 20) + " MiB"; };
+  struct statvfs fs {};
+  if (::statvfs(directory.c_str(), &fs) == 0) {
+    const unsigned long long available =
+        static_cast<unsigned long long>(fs.f_bavail) * static_cast<unsigned long long>(fs.f_frsize);
+    SC_THROW_IF(available < bytes, sc::core::Error,
+                "no room for '" << path << "': it needs about " << mb(bytes)
+                                << ", and the file system holding '" << directory << "' has "
+                                << mb(available) << " free (disk full?)");
+  }
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    SC_THROW_IF(bytes > static_cast<unsigned long long>(limit.rlim_cur), sc::core::Error,
+                "no room for '" << path << "': it needs about " << mb(bytes)
+                                << ", more than the file-size limit of " << limit.rlim_cur
+                                << " bytes (ulimit -f)");
 }
 
 void checkOutputDirectory(const std::string& directory)

@@ -31,6 +31,14 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
                                                const std::string& baseName,
                                                const Teuchos::Comm<int>& comm);
 
+/// Is there room for a file of about \p bytes at \p path (in \p directory)? Checks the free space
+/// of the file system holding \p directory (statvfs) and the file-size limit (RLIMIT_FSIZE,
+/// `ulimit -f`). Throws sc::core::Error naming the file, the size needed and what is available: a
+/// full disk is found before HDF5 starts writing (a write that fails half-way leaves HDF5 unable
+/// to close the file).
+void checkRoomForFile(const std::string& directory, const std::string& path,
+                      unsigned long long bytes);
+
 /// `--check`: would createOutputDirectory(\p directory) succeed? Creates nothing: an existing
 /// directory, or else its nearest existing ancestor, must be a directory in which a file can be
 /// created (probed with a file removed at once). Throws sc::core::InputError naming the directory.
