@@ -130,7 +130,8 @@ void checkRoomForFile(const std::string& directory, const std::string& path,
 {
   auto mb = [](unsigned long long b) { return std::to_string((b + (1ull << 20) - 1) >> 20) + " MiB"; };
   struct statvfs fs {};
-  if (::statvfs(directory.c_str(), &fs) == 0) {
+  // File systems that report no size (f_blocks = 0: some network and virtual ones) are trusted.
+  if (::statvfs(directory.c_str(), &fs) == 0 && fs.f_blocks > 0) {
     const unsigned long long available =
         static_cast<unsigned long long>(fs.f_bavail) * static_cast<unsigned long long>(fs.f_frsize);
     SC_THROW_IF(available < bytes, sc::core::Error,
