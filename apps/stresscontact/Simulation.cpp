@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <numeric>
 #include <iomanip>
@@ -60,6 +62,22 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                   << " needs error indicators, and this build has no estimator yet (issue #6). "
                   << "Valid now: 'Uniform', or Cycles = 0.");
 
+  // Displacements enter the mixed formulation only through Displacement boundaries: without one,
+  // rigid-body motions are free and the system is singular (a pure traction or contact problem
+  // is ill-posed here). Say so now rather than let the solver fail (issue #12, item 3).
+  if (boundaryConditions_.boundariesOfType(core::BoundaryType::Displacement).empty()) {
+    std::ostringstream given;
+    for (const auto& bc : boundaryConditions_.conditions)
+      given << (given.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' (" << core::toString(bc.type) << ")";
+    SC_THROW_IF(true, core::InputError,
+                "the deck has no boundary of Type 'Displacement' ('Boundary Conditions' gives "
+                    << (given.tellp() > 0 ? given.str() : std::string("none"))
+                    << "): rigid-body motions are not fixed and the problem is ill-posed in the "
+                    << "stress-based formulation (contact and tractions do not fix them). Give at "
+                    << "least one boundary part <ParameterList name=\"...\"> with Type = "
+                    << "'Displacement' and a Value.");
+  }
+
   exact_ = core::createExactSolution(problem_.exactSolution, dim, material_,
                                      problem_.manufacturedWavenumber);
   for (const auto& bc : boundaryConditions_.conditions)
@@ -87,8 +105,50 @@ void Simulation::setupMesh()
   if (boundaryConditions_.hasContact())
     contact::checkObstacle(*mesh_, contact_,
                            boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
+  // Every rank needs an element of the initial mesh; found here, before anything is written
+  // (the partitioner would find it only after the output directory exists).
+  SC_THROW_IF(mesh_->numElements() < comm_->getSize(), core::InputError,
+              "the initial mesh has " << mesh_->numElements() << " elements, fewer than the "
+                  << comm_->getSize() << " MPI ranks: make 'Mesh/Initial mesh size' smaller, add "
+                  << "'Mesh/Uniform refinements', or run on at most " << mesh_->numElements()
+                  << " ranks.");
+  warnIfLargeDisplacement();
   progress_.report("mesh", std::to_string(mesh_->numElements()) + " elements, " +
                                std::to_string(mesh_->numVertices()) + " vertices");
+}
+
+void Simulation::warnIfLargeDisplacement() const
+{
+  // The model is linear (small strain): a prescribed displacement that is not small against
+  // the body is outside its range. Warn, on rank 0, and go on (issue #12, item 8).
+  double uMax = 0.0;
+  std::string where;
+  for (const auto& bc : boundaryConditions_.conditions) {
+    if (bc.type != core::BoundaryType::Displacement || bc.fromExactSolution)
+      continue;
+    double n2 = 0.0;
+    for (double v : bc.value)
+      n2 += v * v;
+    if (std::sqrt(n2) > uMax)
+      uMax = std::sqrt(n2), where = bc.boundary;
+  }
+  const int dim = mesh_->dim();
+  const auto& x = mesh_->coordinates();
+  double diag2 = 0.0;
+  for (int d = 0; d < dim; ++d) {
+    double lo = x.empty() ? 0.0 : x[d], hi = lo;
+    for (std::size_t i = d; i < x.size(); i += dim)
+      lo = std::min(lo, x[i]), hi = std::max(hi, x[i]);
+    diag2 += (hi - lo) * (hi - lo);
+  }
+  const double size = std::sqrt(diag2);
+  if (comm_->getRank() == 0 && size > 0.0 && uMax > kLargeDisplacementFraction * size)
+    std::cerr << "stresscontact: warning: the displacement prescribed on '" << where << "' ("
+              << uMax << ") is " << std::lround(100.0 * uMax / size)
+              << "% of the size of the body (" << size << ", the diagonal of its bounding box); "
+              << "the model is linear elasticity with small strains, valid for displacements "
+              << "small against the body (the warning starts at "
+              << 100.0 * kLargeDisplacementFraction << "%)." << std::endl;
 }
 
 void Simulation::refineMesh()
@@ -196,16 +256,19 @@ void Simulation::solveContact(int cycle)
     header.insert(header.end(), {"weighted_gap", "weighted_slip", "status"});
     io::CsvWriter csv(header);
     for (const auto& p : contactSolver_->points()) {
-      io::CsvWriter::Row row;
+      // Filled by index, not push_back: GCC 12 warns (-Wmaybe-uninitialized, a false positive)
+      // about moving std::variant<double, std::string> when a vector of them grows.
+      io::CsvWriter::Row row(header.size());
+      std::size_t col = 0;
       for (int i = 0; i < d; ++i)
-        row.push_back(p.x[i]);
-      row.push_back(p.sigmaN);
+        row[col++] = p.x[i];
+      row[col++] = p.sigmaN;
       for (int k = 0; k < d - 1; ++k)
-        row.push_back(p.sigmaT[k]);
-      row.push_back(p.gap - p.rN);  // G − r_N ≥ 0: weighted gap left open
-      row.push_back(d == 2 ? p.rT[0] : std::hypot(p.rT[0], p.rT[1]));
-      row.push_back(contact::toString(p.status));
-      csv.addRow(row);
+        row[col++] = p.sigmaT[k];
+      row[col++] = p.gap - p.rN;  // G − r_N ≥ 0: weighted gap left open
+      row[col++] = d == 2 ? p.rT[0] : std::hypot(p.rT[0], p.rT[1]);
+      row[col++] = contact::toString(p.status);
+      csv.addRow(std::move(row));
     }
     char name[64];
     std::snprintf(name, sizeof(name), "/contact_cycle%d.csv", cycle);
@@ -216,6 +279,8 @@ void Simulation::solveContact(int cycle)
 void Simulation::checkScene()
 {
   setupMesh();
+  // Would the run be able to create and write its output directory? (creates nothing)
+  io::checkOutputDirectory(output_.directory, *comm_);
 }
 
 void Simulation::recordCycle(int cycle)
@@ -394,6 +459,16 @@ void Simulation::run()
   setupMesh();
 
   io::createOutputDirectory(output_.directory, *comm_);
+  // The run owns its directory: an earlier run's summary, fields and CSVs go before anything is
+  // written, so that no file of that run stands beside this one's (docs/output.md).
+  const auto removed = io::removeEarlierRunFiles(output_.directory, output_.baseName, *comm_);
+  if (!removed.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < removed.size() && i < 6; ++i)
+      names += (i ? ", " : "") + removed[i];
+    progress_.message("removed " + std::to_string(removed.size()) + " file(s) of an earlier run from " +
+                      output_.directory + ": " + names + (removed.size() > 6 ? ", ..." : ""));
+  }
   summary_ = std::make_unique<io::RunSummary>(comm_, output_.directory, versionString(), *params_);
   summary_->json()["deck"] = deckPath_;
   summary_->json()["phases_missing"] = phasesMissing_;

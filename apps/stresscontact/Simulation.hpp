@@ -47,6 +47,10 @@ struct ContactPoint;
 
 namespace sc::app {
 
+/// A prescribed displacement above this fraction of the body's size (bounding-box diagonal)
+/// draws a small-strain warning.
+inline constexpr double kLargeDisplacementFraction = 0.05;
+
 class Simulation {
 public:
   /// Reads the validated parameter list; throws InputError for combinations that this build
@@ -65,6 +69,7 @@ public:
 
 private:
   void setupMesh();
+  void warnIfLargeDisplacement() const;
   void refineMesh();
   void partitionMesh();
   void setupElasticity();

@@ -8,14 +8,17 @@
 //
 // Exit status: 0 success, 1 bad input (deck, mesh file, command line), 2 a solver did not
 // converge (summary.json says converged: false), 3 any other error.
+#include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <thread>
 #include <string>
 #include <vector>
 
 #include <Kokkos_Core.hpp>
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_GlobalMPISession.hpp>
+#include <mpi.h>
 
 #include <sc/core/Error.hpp>
 
@@ -57,7 +60,7 @@ CommandLine parseCommandLine(int argc, char* argv[])
       return argv[++i];
     };
     if (a == "--help" || a == "-h")
-      cl.help = true;
+      cl.help = true;  // handled in main, before Kokkos is initialised
     else if (a == "--version")
       cl.version = true;
     else if (a == "--print-parameters")
@@ -92,24 +95,63 @@ void printFramed(std::ostream& os, const std::string& title, const std::string& 
   os << "\n" << rule << "\n" << message << "\n" << rule << std::endl;
 }
 
+// How long a failing rank waits for the others to report an error too before it concludes the
+// error is its own and aborts the job (docs/reliability.md).
+constexpr double kErrorAgreementSeconds = 30.0;
+
+// A communicator used only to agree on errors, so that the agreement never mixes with a
+// collective operation of the run on the application's communicator.
+class ErrorAgreement {
+public:
+  ErrorAgreement() { MPI_Comm_dup(MPI_COMM_WORLD, &comm_); }
+  ~ErrorAgreement() { MPI_Comm_free(&comm_); }
+  ErrorAgreement(const ErrorAgreement&) = delete;
+  ErrorAgreement& operator=(const ErrorAgreement&) = delete;
+
+  /// Called by every rank that failed with exit code `code`. If every rank fails (the usual
+  /// case: input is the same on all ranks and the library's checks are collective), returns the
+  /// largest code of all ranks; if some rank does not report an error within the time limit,
+  /// returns 0 (the error is local to this rank).
+  int agree(int code)
+  {
+    int worst = 0;
+    MPI_Request request;
+    MPI_Iallreduce(&code, &worst, 1, MPI_INT, MPI_MAX, comm_, &request);
+    const double start = MPI_Wtime();
+    for (int done = 0;;) {
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+      if (done)
+        return worst;
+      if (MPI_Wtime() - start > kErrorAgreementSeconds)
+        return 0;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+
+private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+};
+
 }  // namespace
 
 int main(int argc, char* argv[])
 {
   Teuchos::GlobalMPISession mpiSession(&argc, &argv, nullptr);
-  Kokkos::ScopeGuard kokkos(argc, argv);
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int rank = comm->getRank();
-  // Errors up to the end of validation are collective (every rank reads the same deck), so each
-  // rank can return; after that an error on one rank aborts the job rather than hang the others.
-  bool collectivePhase = true;
-  try {
-    const CommandLine cl = parseCommandLine(argc, argv);
-    if (cl.help) {
+  // Our help before Kokkos' initialisation, which would print Kokkos' help first.
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
       if (rank == 0)
         std::cout << kUsage;
       return 0;
     }
+  Kokkos::ScopeGuard kokkos(argc, argv);
+  ErrorAgreement errors;
+  int code = 0;
+  std::string title, message;
+  try {
+    const CommandLine cl = parseCommandLine(argc, argv);
     if (cl.version) {
       if (rank == 0)
         std::cout << "stresscontact " << sc::app::versionString() << std::endl;
@@ -129,24 +171,27 @@ int main(int argc, char* argv[])
         std::cout << "stresscontact: '" << deck << "' is valid." << std::endl;
       return 0;
     }
-    collectivePhase = false;
     simulation.run();
     return 0;
   } catch (const sc::core::InputError& e) {
-    if (rank == 0 || !collectivePhase)
-      printFramed(std::cerr, "input error", e.what(), rank);
-    if (!collectivePhase && comm->getSize() > 1)
-      MPI_Abort(MPI_COMM_WORLD, 1);
-    return 1;
+    code = 1, title = "input error", message = e.what();
   } catch (const sc::core::ConvergenceError& e) {
     // Simulation::run has already marked summary.json converged: false on rank 0.
-    if (rank == 0 || !collectivePhase)
-      printFramed(std::cerr, "no convergence", e.what(), rank);
-    return 2;
+    code = 2, title = "no convergence", message = e.what();
   } catch (const std::exception& e) {
-    printFramed(std::cerr, "error", e.what(), rank);
-    if (comm->getSize() > 1)
-      MPI_Abort(MPI_COMM_WORLD, 3);
-    return 3;
+    code = 3, title = "error", message = e.what();
   }
+  // Every rank that gets here failed. Input is the same on every rank and the library's checks
+  // are collective, so normally all ranks fail together: then rank 0 alone prints the error and
+  // all ranks leave normally (MPI_Finalize) with the documented exit status. An error of one
+  // rank only (the others did not report one in time) aborts the job rather than hang it.
+  const int agreed = errors.agree(code);
+  if (agreed != 0) {
+    if (rank == 0)
+      printFramed(std::cerr, title, message, 0);
+    return agreed;
+  }
+  printFramed(std::cerr, title, message, rank);
+  MPI_Abort(MPI_COMM_WORLD, code);
+  return code;
 }

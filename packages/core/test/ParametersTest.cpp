@@ -8,6 +8,7 @@
 
 #include "sc/core/Error.hpp"
 #include "sc/core/Parameters.hpp"
+#include "sc/core/ValueText.hpp"
 
 using Teuchos::ParameterList;
 
@@ -170,4 +171,112 @@ TEUCHOS_UNIT_TEST(Parameters, MissingAndMalformedFiles)
     TEST_ASSERT(contains(e.what(), path));
   }
   std::remove(path.c_str());
+}
+
+namespace {
+
+// The error readParameterFile gives for a one-list deck with the given <Parameter>s ("" if none).
+std::string deckError(const std::string& body)
+{
+  const std::string path = "core_unit_tests_strict.xml";
+  {
+    std::ofstream f(path);
+    f << "<ParameterList name=\"StressContact\">\n  <ParameterList name=\"Material\">\n" << body
+      << "\n  </ParameterList>\n</ParameterList>\n";
+  }
+  std::string error;
+  try {
+    sc::core::readParameterFile(path);
+  } catch (const sc::core::InputError& e) {
+    error = e.what();
+  }
+  std::remove(path.c_str());
+  return error;
+}
+
+std::string param(const std::string& name, const std::string& type, const std::string& value)
+{
+  return "<Parameter name=\"" + name + "\" type=\"" + type + "\" value=\"" + value + "\"/>";
+}
+
+}  // namespace
+
+TEUCHOS_UNIT_TEST(Parameters, XmlNumbersAreParsedStrictly)
+{
+  // Teuchos alone reads these as 0, 20, 20600, 1, {0, 0} and -1 (issue #12, item 1).
+  const std::string e1 = deckError(param("Poisson ratio", "double", "abc"));
+  out << e1 << "\n";
+  TEST_ASSERT(contains(e1, "'Material/Poisson ratio' = 'abc' is not a double (not a number)"));
+  TEST_ASSERT(contains(e1, "core_unit_tests_strict.xml"));
+  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "20,600")),
+                       "'Material/Young modulus' = '20,600' is not a double (trailing characters ',600')"));
+  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "20600abc")), "trailing characters 'abc'"));
+  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "")), "is not a double (empty value)"));
+  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "nan")), "not a finite number"));
+  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "1e999")), "out of the range of double"));
+  TEST_ASSERT(contains(deckError(param("Cycles", "int", "1.5")),
+                       "'Material/Cycles' = '1.5' is not an int (trailing characters '.5')"));
+  TEST_ASSERT(contains(deckError(param("Cycles", "int", "99999999999999999999")),
+                       "is not an int (out of the range of int"));
+  TEST_ASSERT(contains(deckError(param("Cycles", "int", "3000000000")), "out of the range of int"));
+  const std::string e2 = deckError(param("Value", "Array(double)", "{0, abc}"));
+  out << e2 << "\n";
+  TEST_ASSERT(contains(e2, "'Material/Value' = '{0, abc}' is not an Array(double) (entry 2 'abc': not a number)"));
+  TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "{0, nan}")), "entry 2 'nan': not a finite number"));
+  TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "{0, }")), "entry 2 '': empty value"));
+  TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "0, 1")), "braces"));
+  TEST_ASSERT(contains(deckError(param("Flag", "bool", "maybe")), "is not a bool (expected true or false)"));
+  // Valid texts pass: blanks around the value, exponents, signs, empty arrays, bool spellings.
+  TEST_EQUALITY(deckError(param("A", "double", " 2.06e4 ") + param("B", "int", "-3") +
+                          param("C", "Array(double)", "{ 0, -0.01 }") + param("D", "Array(double)", "{}") +
+                          param("E", "bool", "true") + param("F", "bool", "FALSE") +
+                          param("G", "string", "anything, 1.5abc")),
+                "");
+}
+
+TEUCHOS_UNIT_TEST(Parameters, DuplicateKeysInXmlAreErrors)
+{
+  const std::string e = deckError(param("Poisson ratio", "double", "0.3") + param("Young modulus", "double", "1") +
+                                  param("Poisson ratio", "double", "0.4"));
+  out << e << "\n";
+  TEST_ASSERT(contains(e, "'Material/Poisson ratio' is given twice in 'Material'"));
+  TEST_ASSERT(contains(deckError("<ParameterList name=\"X\"/><ParameterList name=\"X\"/>"),
+                       "'Material/X' is given twice"));
+}
+
+TEUCHOS_UNIT_TEST(Parameters, OverridesAreParsedStrictly)
+{
+  const ParameterList valid = validList();
+  auto overrideError = [&](const std::string& assignment) {
+    ParameterList user;
+    try {
+      sc::core::applyOverride(user, valid, assignment);
+    } catch (const sc::core::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  TEST_ASSERT(contains(overrideError("Material/Poisson ratio=0.3abc"), "trailing characters 'abc'"));
+  TEST_ASSERT(contains(overrideError("Material/Poisson ratio="), "empty value"));
+  TEST_ASSERT(contains(overrideError("Adaptivity/Cycles=1.5"), "trailing characters '.5'"));
+  TEST_ASSERT(contains(overrideError("Adaptivity/Cycles=99999999999999999999"), "out of the range of int"));
+  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top/Value={0, abc}"), "entry 2 'abc': not a number"));
+  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top/Value={0, nan}"), "not a finite number"));
+  const std::string sub = overrideError("Material=1");
+  out << sub << "\n";
+  TEST_ASSERT(contains(sub, "'Material' is a sublist, not a key"));
+  TEST_ASSERT(contains(sub, "'Young modulus', 'Poisson ratio'"));
+  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top=1"), "'Boundary Conditions/Top' is a sublist"));
+  TEST_EQUALITY(overrideError("Material/Poisson ratio= 0.25 "), "");
+}
+
+TEUCHOS_UNIT_TEST(Parameters, DirectoryAsDeck)
+{
+  try {
+    sc::core::readParameterFile(".");
+    TEST_ASSERT(false);
+  } catch (const sc::core::InputError& e) {
+    out << e.what() << "\n";
+    TEST_ASSERT(contains(e.what(), "is a directory"));
+  }
 }

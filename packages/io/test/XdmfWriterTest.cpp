@@ -2,6 +2,7 @@
 // contiguous block of vertex rows/layers; with 4 ranks some ranks own no cells or no boundary
 // facets), two steps each, re-read with serial HDF5 on rank 0 and compared value by value.
 #include <sc/io/XdmfWriter.hpp>
+#include <sc/io/OutputDirectory.hpp>
 
 #include "TestDirectory.hpp"
 
@@ -17,6 +18,9 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+
+#include <signal.h>
+#include <sys/resource.h>
 
 namespace {
 
@@ -539,6 +543,63 @@ TEUCHOS_UNIT_TEST(XdmfWriter, UnwritableDirectoryThrowsNamingIt)
       TEST_ASSERT(std::string(e.what()).find(bad) != std::string::npos);
     }
     TEST_ASSERT(threw);
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// A full disk, simulated with a file-size limit (RLIMIT_FSIZE, `ulimit -f`; writes beyond it fail
+// with EFBIG as writes to a full disk fail with ENOSPC): the writer finds that there is no room
+// before HDF5 writes anything, names the file, the size and the limit, leaves no temporary, and
+// the process ends normally (before, "H5Dwrite failed" without a reason, then a segmentation
+// fault in HDF5 at MPI_Finalize; issue #12, item 8).
+TEUCHOS_UNIT_TEST(XdmfWriter, NoRoomForTheFileIsFoundBeforeWriting)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string dir = freshDirectory(*comm, "xdmf_file_size_limit");
+  sc::io::XdmfWriter writer(comm, dir, "solution");
+  const auto pieces = pieces2D(Mesh2D{200, 200}, comm->getRank(), comm->getSize());  // ~2.5 MB
+
+  struct sigaction ignore {}, previous {};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGXFSZ, &ignore, &previous);
+  rlimit saved{};
+  getrlimit(RLIMIT_FSIZE, &saved);
+  rlimit limited = saved;
+  limited.rlim_cur = 64 * 1024;
+  setrlimit(RLIMIT_FSIZE, &limited);
+  std::string message;
+  try {
+    writer.writeStep(0, pieces);
+  } catch (const sc::core::Error& e) {
+    message = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  sigaction(SIGXFSZ, &previous, nullptr);
+  out << message << "\n";
+  TEST_ASSERT(message.find("no room for '") != std::string::npos);
+  TEST_ASSERT(message.find("solution_c0000.h5") != std::string::npos);
+  TEST_ASSERT(message.find("file-size limit of 65536 bytes (ulimit -f)") != std::string::npos);
+  comm->barrier();
+  TEST_ASSERT(temporaries(dir).empty());
+  // With the limit lifted the same step is written.
+  writer.writeStep(0, pieces);
+}
+
+TEUCHOS_UNIT_TEST(XdmfWriter, CheckRoomForFileNamesTheFreeSpace)
+{
+  const std::string dir = ".";
+  sc::io::checkRoomForFile(dir, "./small.h5", 1024);
+  try {
+    sc::io::checkRoomForFile(dir, "./huge.h5", 1ull << 62);
+    TEST_ASSERT(false);
+  } catch (const sc::core::Error& e) {
+    out << e.what() << "\n";
+    const std::string m = e.what();
+    TEST_ASSERT(m.find("no room for './huge.h5'") != std::string::npos);
+    TEST_ASSERT(m.find("free (disk full?)") != std::string::npos);
   }
 }
 

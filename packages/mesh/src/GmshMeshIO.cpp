@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <unordered_map>
@@ -225,6 +226,9 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
 {
   const std::string origin = "Gmsh file '" + path + "'";
   {
+    std::error_code ec;
+    SC_THROW_IF(std::filesystem::is_directory(path, ec), sc::core::InputError,
+                origin << " (Mesh/File) is a directory, not a .msh file");
     std::ifstream probe(path);
     SC_THROW_IF(!probe, sc::core::InputError,
                 origin << " (Mesh/File) cannot be opened: no such file or no read permission");

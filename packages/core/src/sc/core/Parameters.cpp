@@ -1,15 +1,22 @@
 #include "sc/core/Parameters.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <regex>
 #include <sstream>
 
-#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Teuchos_FileInputSource.hpp>
+#include <Teuchos_XMLObject.hpp>
+#include <Teuchos_XMLParameterListReader.hpp>
 
 #include "sc/core/Error.hpp"
+#include "sc/core/ValueText.hpp"
 
 namespace sc::core {
 namespace {
@@ -365,17 +372,225 @@ void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterLi
   fillDefaults(user, valid);
 }
 
+namespace {
+
+std::string trimmed(const std::string& text)
+{
+  const auto first = text.find_first_not_of(" \t\n\r");
+  if (first == std::string::npos)
+    return "";
+  const auto last = text.find_last_not_of(" \t\n\r");
+  return text.substr(first, last - first + 1);
+}
+
+std::string checkDoubleText(const std::string& raw, double* out)
+{
+  const std::string t = trimmed(raw);
+  if (t.empty())
+    return "empty value";
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (end == t.c_str())
+    return "not a number";
+  if (*end != '\0')
+    return "trailing characters '" + std::string(end) + "'";
+  if (!std::isfinite(v))
+    return errno == ERANGE ? "out of the range of double" : "not a finite number";
+  if (out)
+    *out = v;
+  return "";
+}
+
+std::string checkIntText(const std::string& raw, int* out)
+{
+  const std::string t = trimmed(raw);
+  if (t.empty())
+    return "empty value";
+  errno = 0;
+  char* end = nullptr;
+  const long long v = std::strtoll(t.c_str(), &end, 10);
+  if (end == t.c_str())
+    return "not an integer";
+  if (*end != '\0')
+    return "trailing characters '" + std::string(end) + "'";
+  if (errno == ERANGE || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    return "out of the range of int [" + std::to_string(std::numeric_limits<int>::min()) + ", " +
+           std::to_string(std::numeric_limits<int>::max()) + "]";
+  if (out)
+    *out = static_cast<int>(v);
+  return "";
+}
+
+std::string checkBoolText(const std::string& raw)
+{
+  std::string t = trimmed(raw);
+  std::transform(t.begin(), t.end(), t.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const char* ok : {"true", "false", "yes", "no", "1", "0"})
+    if (t == ok)
+      return "";
+  return "expected true or false";
+}
+
+// "{a, b, c}": each element checked by `element`; "{}" is the empty array.
+template <typename F>
+std::string checkArrayText(const std::string& raw, F element)
+{
+  const std::string t = trimmed(raw);
+  if (t.size() < 2 || t.front() != '{' || t.back() != '}')
+    return "an array is written in braces, e.g. {0, -0.01}";
+  const std::string inner = t.substr(1, t.size() - 2);
+  if (trimmed(inner).empty())
+    return "";
+  std::size_t start = 0, index = 1;
+  while (true) {
+    const auto comma = inner.find(',', start);
+    const std::string item = inner.substr(start, comma == std::string::npos ? std::string::npos
+                                                                            : comma - start);
+    const std::string why = element(item);
+    if (!why.empty())
+      return "entry " + std::to_string(index) + " '" + trimmed(item) + "': " + why;
+    if (comma == std::string::npos)
+      return "";
+    start = comma + 1;
+    ++index;
+  }
+}
+
+std::string indefinite(const std::string& type)
+{
+  return (type == "int" || type.rfind("Array", 0) == 0 ? "an " : "a ") + type;
+}
+
+// Teuchos messages carry "file:line:", "Throw number = N" and "Throw test that evaluated to
+// true: ..." lines meant for developers; keep only the sentences for the user.
+std::string withoutTeuchosNoise(const std::string& message)
+{
+  std::istringstream in(message);
+  std::ostringstream out;
+  bool first = true;
+  for (std::string line; std::getline(in, line);) {
+    const std::string t = trimmed(line);
+    if (t.empty() || t.rfind("Throw number", 0) == 0 || t.rfind("Throw test that evaluated", 0) == 0)
+      continue;
+    // "/usr/include/trilinos/Teuchos_X.cpp:123:" alone or as the prefix of the sentence
+    static const std::regex source(R"(^\S+\.(cpp|hpp|h):[0-9]+:\s*)");
+    const std::string sentence = std::regex_replace(t, source, "");
+    if (sentence.empty())
+      continue;
+    out << (first ? "" : " ") << sentence;
+    first = false;
+  }
+  return out.str();
+}
+
+// The raw XML of a deck: every number parsed strictly, no key twice in one list.
+void checkXmlList(const Teuchos::XMLObject& list, const std::string& path, const std::string& file)
+{
+  std::vector<std::string> seen;
+  for (int i = 0; i < list.numChildren(); ++i) {
+    const Teuchos::XMLObject& child = list.getChild(i);
+    const std::string& tag = child.getTag();
+    if ((tag != "Parameter" && tag != "ParameterList") || !child.hasAttribute("name"))
+      continue;  // Teuchos reports malformed entries itself
+    const std::string name = child.getAttribute("name");
+    const std::string keyPath = joinPath(path, name);
+    SC_THROW_IF(std::find(seen.begin(), seen.end(), name) != seen.end(), InputError,
+                "'" << file << "': '" << keyPath << "' is given twice in '"
+                    << (path.empty() ? "(top level)" : path)
+                    << "'; give each key once (one value would silently override the other).");
+    seen.push_back(name);
+    if (tag == "ParameterList") {
+      checkXmlList(child, keyPath, file);
+      continue;
+    }
+    if (!child.hasAttribute("type") || !child.hasAttribute("value"))
+      continue;
+    const std::string type = child.getAttribute("type"), text = child.getAttribute("value");
+    const std::string why = checkValueText(type, text);
+    SC_THROW_IF(!why.empty(), InputError,
+                "'" << file << "': '" << keyPath << "' = '" << text << "' is not "
+                    << indefinite(type) << " (" << why << ").");
+  }
+}
+
+}  // namespace
+
+std::string checkValueText(const std::string& type, const std::string& text)
+{
+  if (type == "double")
+    return checkDoubleText(text, nullptr);
+  if (type == "int")
+    return checkIntText(text, nullptr);
+  if (type == "bool")
+    return checkBoolText(text);
+  if (type == "Array(double)")
+    return checkArrayText(text, [](const std::string& x) { return checkDoubleText(x, nullptr); });
+  if (type == "Array(int)")
+    return checkArrayText(text, [](const std::string& x) { return checkIntText(x, nullptr); });
+  return "";
+}
+
+double parseDouble(const std::string& text)
+{
+  double v = 0;
+  const std::string why = checkDoubleText(text, &v);
+  SC_THROW_IF(!why.empty(), InputError, why);
+  return v;
+}
+
+int parseInt(const std::string& text)
+{
+  int v = 0;
+  const std::string why = checkIntText(text, &v);
+  SC_THROW_IF(!why.empty(), InputError, why);
+  return v;
+}
+
+Teuchos::Array<double> parseDoubleArray(const std::string& text)
+{
+  const std::string why = checkValueText("Array(double)", text);
+  SC_THROW_IF(!why.empty(), InputError, why);
+  Teuchos::Array<double> values;
+  const std::string t = trimmed(text);
+  std::stringstream inner(t.substr(1, t.size() - 2));
+  if (!trimmed(inner.str()).empty())
+    for (std::string item; std::getline(inner, item, ',');)
+      values.push_back(parseDouble(item));
+  return values;
+}
+
+// Besides Teuchos' checks: the deck is no directory, every number is parsed strictly
+// (checkValueText) and no key is given twice in one list.
 Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path)
 {
+  std::error_code ec;
+  SC_THROW_IF(std::filesystem::is_directory(path, ec), InputError,
+              "the input deck '" << path << "' is a directory, not an XML file.");
   std::ifstream in(path);
   SC_THROW_IF(!in, InputError,
               "cannot open the input deck '" << path << "' (no such file or not readable).");
+  Teuchos::XMLObject xml;
   try {
-    return Teuchos::getParametersFromXmlFile(path);
+    xml = Teuchos::FileInputSource(path).getObject();
   } catch (const std::exception& e) {
     SC_THROW_IF(true, InputError,
                 "the input deck '" << path << "' is not a valid Teuchos XML parameter list: "
-                                   << e.what());
+                                   << withoutTeuchosNoise(e.what()));
+  }
+  SC_THROW_IF(xml.isEmpty() || xml.getTag() != "ParameterList", InputError,
+              "the input deck '" << path << "' is not a valid Teuchos XML parameter list: "
+                                 << "its root element must be <ParameterList>.");
+  checkXmlList(xml, "", path);
+  try {
+    Teuchos::XMLParameterListReader reader;
+    reader.setAllowsDuplicateSublists(false);
+    return Teuchos::rcp(new Teuchos::ParameterList(reader.toParameterList(xml)));
+  } catch (const std::exception& e) {
+    SC_THROW_IF(true, InputError,
+                "the input deck '" << path << "' is not a valid Teuchos XML parameter list: "
+                                   << withoutTeuchosNoise(e.what()));
   }
   return Teuchos::null;
 }
@@ -409,29 +624,34 @@ void applyOverride(Teuchos::ParameterList& user, const Teuchos::ParameterList& v
     where = joinPath(where, parts[i]);
   }
   const std::string& key = parts.back();
-  SC_THROW_IF(!v->isParameter(key) || v->isSublist(key), InputError,
+  if (v->isSublist(key) || isTemplateList(*v)) {
+    const Teuchos::ParameterList& sub =
+        isTemplateList(*v) ? v->sublist(kTemplateSublist) : v->sublist(key);
+    const Teuchos::ParameterList& keys =
+        isTemplateList(sub) ? sub.sublist(kTemplateSublist) : sub;
+    SC_THROW_IF(true, InputError,
+                "--set " << assignment << ": '" << path << "' is a sublist, not a key; set one of "
+                         << "its keys (--set \"" << path << (isTemplateList(sub) ? "/<name>" : "")
+                         << "/Key=value\"): " << quotedList(keysOf(keys)) << ".");
+  }
+  SC_THROW_IF(!v->isParameter(key), InputError,
               "--set " << assignment << ": unknown key '" << path << "'. Valid keys in '"
                        << (where.empty() ? "(top level)" : where) << "': " << quotedList(keysOf(*v))
                        << ".");
   const Teuchos::ParameterEntry& ve = v->getEntry(key);
   const std::string type = typeOf(ve);
   try {
-    std::size_t used = 0;
     if (type == "double") {
-      const double x = std::stod(text, &used);
-      SC_THROW_IF(used != text.size(), InputError, "trailing characters");
-      u->set(key, x);
+      u->set(key, parseDouble(text));
     } else if (type == "int") {
-      const int x = std::stoi(text, &used);
-      SC_THROW_IF(used != text.size(), InputError, "trailing characters");
-      u->set(key, x);
+      u->set(key, parseInt(text));
     } else if (type == "bool") {
       SC_THROW_IF(text != "true" && text != "false", InputError, "expected true or false");
       u->set(key, text == "true");
     } else if (type == "string") {
       u->set(key, text);
     } else if (type == "Array(double)") {
-      u->set(key, Teuchos::fromStringToArray<double>(text));
+      u->set(key, parseDoubleArray(text));
     } else {
       SC_THROW_IF(true, InputError, "type " << type << " cannot be set from the command line");
     }

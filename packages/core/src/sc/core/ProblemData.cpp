@@ -57,8 +57,13 @@ Teuchos::RCP<const Teuchos::ParameterList> Material::getValidParameters()
 {
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Material"));
-    declareReal(*pl, "Young modulus", 1.0, "Young's modulus E (> 0), in the deck's stress units.",
-                0.0, true, kInfinity, false);
+    // Upper bound: squares of stresses overflow near E = 1e155 (hertz2d's stick/slip states
+    // change between 1e155 and 1e160; docs/reliability.md); 1e100 leaves a wide margin for any
+    // unit system. Small values are fine (measured down to 1e-300).
+    declareReal(*pl, "Young modulus", 1.0,
+                "Young's modulus E (> 0), in the deck's stress units; at most 1e100 (larger values "
+                "overflow squared stresses).",
+                0.0, true, 1e100, false);
     declareReal(*pl, "Poisson ratio", 0.3,
                 "Poisson's ratio ν in [0, 0.5]; 0.5 (incompressible) is valid: the method never "
                 "forms λ (DESIGN §1).",

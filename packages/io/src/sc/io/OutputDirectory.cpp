@@ -8,11 +8,36 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
+#include <regex>
 #include <system_error>
+
+#include <nlohmann/json.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 namespace sc::io {
+
+namespace {
+
+// Probe by creating a file: access(W_OK) says yes to root on read-only mounts and special
+// file systems. Returns "" or the reason the file could not be created.
+std::string probeWritable(const std::filesystem::path& dir)
+{
+  const std::string probe = (dir / (".write_probe." + std::to_string(::getpid()))).string();
+  std::ofstream out(probe);
+  out << "probe\n";
+  out.close();
+  const int err = errno;
+  const bool ok = static_cast<bool>(out);
+  std::remove(probe.c_str());
+  return ok ? std::string() : std::string(std::strerror(err));
+}
+
+}  // namespace
 
 void createOutputDirectory(const std::string& directory)
 {
@@ -26,23 +51,130 @@ void createOutputDirectory(const std::string& directory)
                                                  << ec.message());
   SC_THROW_IF(!fs::is_directory(directory, ec), sc::core::InputError,
               "Output directory '" << directory << "' (Output/Directory) exists but is not a directory");
-  // Probe by creating a file: access(W_OK) says yes to root on read-only mounts and special
-  // file systems.
-  const std::string probe =
-      (fs::path(directory) / (".write_probe." + std::to_string(::getpid()))).string();
+  const std::string why = probeWritable(directory);
+  SC_THROW_IF(!why.empty(), sc::core::InputError,
+              "Output directory '" << directory << "' (Output/Directory) is not writable: " << why);
+}
+
+std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
+                                               const std::string& baseName)
+{
+  namespace fs = std::filesystem;
+  std::vector<std::string> bases{baseName};
+  const fs::path summary = fs::path(directory) / "summary.json";
   {
-    std::ofstream out(probe);
-    out << "probe\n";
-    out.close();
-    if (!out) {
-      const int err = errno;
-      std::remove(probe.c_str());
-      SC_THROW_IF(true, sc::core::InputError,
-                  "Output directory '" << directory << "' (Output/Directory) is not writable: "
-                                       << std::strerror(err));
+    // The base name of the run that wrote summary.json (it may differ from this run's).
+    std::ifstream in(summary);
+    if (in) {
+      const auto j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+      if (j.is_object() && j.contains("parameters") && j["parameters"].is_object() &&
+          j["parameters"].contains("Output") && j["parameters"]["Output"].is_object() &&
+          j["parameters"]["Output"].contains("Base name") &&
+          j["parameters"]["Output"]["Base name"].is_string()) {
+        const std::string earlier = j["parameters"]["Output"]["Base name"];
+        if (!earlier.empty() && earlier.find('/') == std::string::npos)
+          bases.push_back(earlier);
+      }
     }
   }
-  std::remove(probe.c_str());
+  auto quote = [](const std::string& text) {
+    static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
+    return std::regex_replace(text, special, R"(\$&)");
+  };
+  std::string alternatives = "summary\\.json|contact_cycle[0-9]+\\.csv";
+  for (const auto& b : bases)
+    alternatives += "|" + quote(b) + "\\.xdmf|" + quote(b) + "_c[0-9]+\\.h5";
+  const std::regex ours("(" + alternatives + ")(\\.tmp\\.[0-9]+)?");
+
+  std::vector<std::string> removed;
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec))
+    return removed;
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(directory, ec)) {
+    std::error_code tec;
+    if (std::regex_match(entry.path().filename().string(), ours) && !entry.is_directory(tec))
+      stale.push_back(entry.path());
+  }
+  SC_THROW_IF(ec, sc::core::InputError,
+              "Cannot list the output directory '" << directory << "' (Output/Directory): "
+                                                   << ec.message());
+  for (const auto& path : stale) {
+    fs::remove(path, ec);
+    SC_THROW_IF(ec, sc::core::InputError,
+                "Cannot remove '" << path.string() << "', a file of an earlier run in the "
+                                  << "output directory (Output/Directory): " << ec.message()
+                                  << ". Remove it or choose another directory.");
+    removed.push_back(path.filename().string());
+  }
+  std::sort(removed.begin(), removed.end());
+  return removed;
+}
+
+std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
+                                               const std::string& baseName,
+                                               const Teuchos::Comm<int>& comm)
+{
+  std::vector<std::string> removed;
+  runOnRoot(comm, [&] { removed = removeEarlierRunFiles(directory, baseName); });
+  // Every rank learns how many (the names matter only to rank 0's progress line).
+  int count = static_cast<int>(removed.size());
+  Teuchos::broadcast(comm, 0, &count);
+  if (comm.getRank() != 0)
+    removed.assign(static_cast<std::size_t>(count), std::string());
+  return removed;
+}
+
+void checkRoomForFile(const std::string& directory, const std::string& path,
+                      unsigned long long bytes)
+{
+  auto mb = [](unsigned long long b) { return std::to_string((b + (1ull << 20) - 1) >> 20) + " MiB"; };
+  struct statvfs fs {};
+  // File systems that report no size (f_blocks = 0: some network and virtual ones) are trusted.
+  if (::statvfs(directory.c_str(), &fs) == 0 && fs.f_blocks > 0) {
+    const unsigned long long available =
+        static_cast<unsigned long long>(fs.f_bavail) * static_cast<unsigned long long>(fs.f_frsize);
+    SC_THROW_IF(available < bytes, sc::core::Error,
+                "no room for '" << path << "': it needs about " << mb(bytes)
+                                << ", and the file system holding '" << directory << "' has "
+                                << mb(available) << " free (disk full?)");
+  }
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    SC_THROW_IF(bytes > static_cast<unsigned long long>(limit.rlim_cur), sc::core::Error,
+                "no room for '" << path << "': it needs about " << mb(bytes)
+                                << ", more than the file-size limit of " << limit.rlim_cur
+                                << " bytes (ulimit -f)");
+}
+
+void checkOutputDirectory(const std::string& directory)
+{
+  namespace fs = std::filesystem;
+  SC_THROW_IF(directory.empty(), sc::core::InputError,
+              "Output/Directory is empty; give a directory name such as \"output\"");
+  std::error_code ec;
+  fs::path p = fs::absolute(directory, ec);
+  if (ec)
+    p = directory;
+  // The directory itself if it exists, else the nearest existing ancestor (where it would be
+  // created).
+  while (!fs::exists(p, ec) && p.has_parent_path() && p.parent_path() != p)
+    p = p.parent_path();
+  const bool self = fs::equivalent(p, fs::absolute(directory, ec), ec);
+  SC_THROW_IF(!fs::is_directory(p, ec), sc::core::InputError,
+              (self ? "Output directory '" + directory + "' (Output/Directory) exists but is not a directory"
+                    : "Cannot create output directory '" + directory + "' (Output/Directory): '" +
+                          p.string() + "' is not a directory"));
+  const std::string why = probeWritable(p);
+  SC_THROW_IF(!why.empty(), sc::core::InputError,
+              (self ? "Output directory '" + directory + "' (Output/Directory) is not writable: " + why
+                    : "Cannot create output directory '" + directory + "' (Output/Directory): '" +
+                          p.string() + "' is not writable: " + why));
+}
+
+void checkOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm)
+{
+  runOnRoot(comm, [&] { checkOutputDirectory(directory); });
 }
 
 void createOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm)

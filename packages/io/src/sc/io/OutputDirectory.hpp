@@ -6,6 +6,7 @@
 #include <Teuchos_Comm.hpp>
 
 #include <string>
+#include <vector>
 
 namespace sc::io {
 
@@ -15,5 +16,35 @@ void createOutputDirectory(const std::string& directory);
 
 /// Collective version: rank 0 creates and probes, every rank throws the same error on failure.
 void createOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm);
+
+/// A run owns its output directory (docs/output.md "An earlier run's files"): remove from
+/// \p directory the files that a StressContact run writes there: summary.json,
+/// `<base>.xdmf`, `<base>_c<NNNN>.h5`, contact_cycle<N>.csv and leftover `<one of these>.tmp.<pid>`,
+/// for \p baseName and for the Output/Base name recorded in an earlier summary.json. Other files
+/// are left alone. Returns the names removed (sorted); throws sc::core::InputError if one cannot
+/// be removed.
+std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
+                                               const std::string& baseName);
+
+/// Collective version: rank 0 removes, every rank gets the list (or the same error).
+std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
+                                               const std::string& baseName,
+                                               const Teuchos::Comm<int>& comm);
+
+/// Is there room for a file of about \p bytes at \p path (in \p directory)? Checks the free space
+/// of the file system holding \p directory (statvfs) and the file-size limit (RLIMIT_FSIZE,
+/// `ulimit -f`). Throws sc::core::Error naming the file, the size needed and what is available: a
+/// full disk is found before HDF5 starts writing (a write that fails half-way leaves HDF5 unable
+/// to close the file).
+void checkRoomForFile(const std::string& directory, const std::string& path,
+                      unsigned long long bytes);
+
+/// `--check`: would createOutputDirectory(\p directory) succeed? Creates nothing: an existing
+/// directory, or else its nearest existing ancestor, must be a directory in which a file can be
+/// created (probed with a file removed at once). Throws sc::core::InputError naming the directory.
+void checkOutputDirectory(const std::string& directory);
+
+/// Collective version: rank 0 checks, every rank throws the same error on failure.
+void checkOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm);
 
 }  // namespace sc::io

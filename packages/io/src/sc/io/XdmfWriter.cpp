@@ -12,7 +12,9 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <sstream>
 #include <unistd.h>
@@ -94,8 +96,16 @@ struct H5Context {
 
   hid_t check(hid_t id, const std::string& what, const std::string& object) const
   {
-    SC_THROW_IF(id < 0, sc::core::Error,
-                "HDF5 error: " << what << " failed for '" << object << "' in file '" << file << "'");
+    if (id < 0) {
+      // The system's reason where it is one of the write failures (errno may be stale
+      // otherwise): no space, quota, file too large, I/O error, read-only file system.
+      const int err = errno;
+      const bool writeError =
+          err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO || err == EROFS;
+      SC_THROW_IF(true, sc::core::Error,
+                  "HDF5 error: " << what << " failed for '" << object << "' in file '" << file
+                                 << "'" << (writeError ? std::string(": ") + std::strerror(err) : ""));
+    }
     return id;
   }
 };
@@ -452,6 +462,26 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
 
   // 3. Collective HDF5 write under a temporary name (rank 0's pid, shared by all ranks).
   const std::string finalPath = h5Path(cycle);
+  {
+    // Room for the file first (disk full, ulimit -f): HDF5 cannot close a file whose write
+    // failed half-way, and crashes at MPI_Finalize (issue #12, item 8). Data plus a margin for
+    // HDF5's metadata.
+    unsigned long long bytes = 0;
+    for (std::size_t g = 0; g < ng; ++g) {
+      const auto nv = static_cast<unsigned long long>(total[2 * geometryOf[g]]);
+      const auto nc = static_cast<unsigned long long>(total[2 * g + 1]);
+      if (grids[g].geometryFrom.empty())
+        bytes += nv * 3 * 8;
+      bytes += nc * static_cast<unsigned long long>(verticesPerCell(grids[g].cellType)) * 8;
+      for (const auto& f : grids[g].pointFields)
+        bytes += nv * static_cast<unsigned long long>(storedComponents(f.kind)) * 8;
+      for (const auto& f : grids[g].cellFields)
+        bytes += nc * static_cast<unsigned long long>(storedComponents(f.kind)) * 8;
+      bytes += nc * 4 * (grids[g].integerCellFields.size() + 1);  // + partition
+    }
+    bytes += bytes / 20 + (64ull << 10);
+    runOnRoot(comm, [&] { checkRoomForFile(directory_, finalPath, bytes); });
+  }
   long pid = static_cast<long>(::getpid());
   Teuchos::broadcast<int, long>(comm, 0, &pid);
   const std::string tmpPath = temporaryPathFor(finalPath, pid);

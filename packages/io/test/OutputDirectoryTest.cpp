@@ -1,0 +1,83 @@
+// The output directory: a run removes the files of an earlier run (and nothing else), and
+// --check's probe creates nothing (issue #12, items 3 and 5).
+#include <sc/io/OutputDirectory.hpp>
+
+#include <sc/core/Error.hpp>
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per rank (the test runs at 1, 2 and 4 ranks; each rank works alone).
+std::string freshDirectory(const std::string& name)
+{
+  const int rank = Teuchos::DefaultComm<int>::getComm()->getRank();
+  const std::string dir = "output_directory_test_" + name + "_r" + std::to_string(rank);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void touch(const std::string& path, const std::string& text = "x\n")
+{
+  std::ofstream(path) << text;
+}
+
+TEUCHOS_UNIT_TEST(OutputDirectory, RemovesOnlyTheFilesOfAnEarlierRun)
+{
+  const std::string dir = freshDirectory("stale");
+  // An earlier run with Base name "old": its summary records it.
+  touch(dir + "/summary.json", R"({"parameters": {"Output": {"Base name": "old"}}})");
+  for (const char* f : {"old.xdmf", "old_c0000.h5", "old_c0001.h5", "solution.xdmf",
+                        "solution_c0003.h5", "contact_cycle0.csv", "contact_cycle12.csv",
+                        "solution_c0002.h5.tmp.4242", "summary.json.tmp.17"})
+    touch(dir + "/" + f);
+  // Not ours: kept.
+  const std::vector<std::string> kept = {"notes.txt", "mesh.msh", "other.xdmf", "old_c.h5",
+                                         "contact_cycle.csv", "solution_c0001.h5.bak", "my.json"};
+  for (const auto& f : kept)
+    touch(dir + "/" + f);
+  fs::create_directories(dir + "/contact_cycle3.csv");  // a directory is never removed
+
+  const auto removed = sc::io::removeEarlierRunFiles(dir, "solution");
+  TEST_COMPARE_ARRAYS(removed, (std::vector<std::string>{
+                                   "contact_cycle0.csv", "contact_cycle12.csv", "old.xdmf",
+                                   "old_c0000.h5", "old_c0001.h5", "solution.xdmf",
+                                   "solution_c0002.h5.tmp.4242", "solution_c0003.h5",
+                                   "summary.json", "summary.json.tmp.17"}));
+  for (const auto& f : kept)
+    TEST_ASSERT(fs::exists(dir + "/" + f));
+  TEST_ASSERT(fs::is_directory(dir + "/contact_cycle3.csv"));
+  // Nothing left of ours: a second call removes nothing; a missing directory is no error.
+  TEST_EQUALITY(sc::io::removeEarlierRunFiles(dir, "solution").size(), 0u);
+  TEST_EQUALITY(sc::io::removeEarlierRunFiles(dir + "/missing", "solution").size(), 0u);
+  fs::remove_all(dir);
+}
+
+TEUCHOS_UNIT_TEST(OutputDirectory, CheckCreatesNothingAndNamesTheProblem)
+{
+  const std::string dir = freshDirectory("check");
+  sc::io::checkOutputDirectory(dir);                   // exists, writable
+  sc::io::checkOutputDirectory(dir + "/new/sub");      // would be created
+  TEST_ASSERT(!fs::exists(dir + "/new"));
+  TEST_EQUALITY(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
+  touch(dir + "/file");
+  try {
+    sc::io::checkOutputDirectory(dir + "/file/sub");
+    TEST_ASSERT(false);
+  } catch (const sc::core::InputError& e) {
+    out << e.what() << "\n";
+    TEST_ASSERT(std::string(e.what()).find("is not a directory") != std::string::npos);
+  }
+  TEST_THROW(sc::io::checkOutputDirectory(dir + "/file"), sc::core::InputError);
+  TEST_THROW(sc::io::checkOutputDirectory(""), sc::core::InputError);
+  fs::remove_all(dir);
+}
+
+}  // namespace
