@@ -1,4 +1,5 @@
 // Errors against exact solutions and cell averages for output (issue #4 item 4).
+#include <algorithm>
 #include <cmath>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -8,28 +9,31 @@
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 
+#include "sc/assembly/ElementSolution.hpp"
 #include "sc/assembly/MixedElasticityAssembler.hpp"
 
 namespace sc::assembly {
-namespace {
 
-// The element's coefficients from an overlap-map vector.
-void gatherCoefficients(const disc::MixedElasticitySpace& S, const Map& overlap,
-                        const Teuchos::ArrayRCP<const double>& x, int e, std::vector<double>& c)
+ElementSolution::ElementSolution(const MixedElasticityAssembler& assembler, const MultiVector& solution)
+  : space_(assembler.space()), overlapMap_(assembler.overlapMap()),
+    overlap_(assembler.toOverlap(solution)), x_(overlap_->getData(0)),
+    c_(static_cast<std::size_t>(assembler.space().localSize()))
 {
-  const long long* g = S.elementDofs(e);
-  for (int i = 0; i < S.localSize(); ++i)
-    c[i] = x[overlap.getLocalElement(g[i])];
 }
 
-// σ_h, div σ_h, u_h, θ_h of one element at cubature point q.
-struct PointValues {
-  double sigma[9], divSigma[3], u[3], theta[3];
-};
+ElementSolution::~ElementSolution() = default;
 
-void evaluate(const disc::MixedElasticitySpace& S, const disc::ElementValues& ev,
-              const std::vector<double>& c, int q, PointValues& v)
+void ElementSolution::gather(int e)
 {
+  const long long* g = space_.elementDofs(e);
+  for (int i = 0; i < space_.localSize(); ++i)
+    c_[i] = x_[overlapMap_->getLocalElement(g[i])];
+}
+
+void ElementSolution::evaluate(const disc::ElementValues& ev, int q, PointValues& v) const
+{
+  const auto& S = space_;
+  const auto& c = c_;
   const int d = S.dim(), nRT = S.stressBasisSize(), nP = S.displacementBasisSize();
   for (int i = 0; i < d; ++i) {
     v.divSigma[i] = 0.0;
@@ -52,25 +56,32 @@ void evaluate(const disc::MixedElasticitySpace& S, const disc::ElementValues& ev
   }
 }
 
-}  // namespace
+void ElementSolution::stress(const disc::FaceValues& fv, int q, double* sigma) const
+{
+  const int d = space_.dim(), nRT = space_.stressBasisSize();
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) {
+      double s = 0.0;
+      for (int a = 0; a < nRT; ++a)
+        s += c_[space_.stressOffset(i) + a] * fv.stress(a, q, j);
+      sigma[i * d + j] = s;
+    }
+}
 
 ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiVector& solution,
                          const core::ExactSolution& exact, const Teuchos::Comm<int>& comm)
 {
   const auto& S = assembler.space();
   const int d = S.dim(), r = S.numRotationComponents();
-  auto overlapVec = assembler.toOverlap(solution);
-  auto x = overlapVec->getData(0);
-  const Map& overlap = *assembler.overlapMap();
+  ElementSolution sol(assembler, solution);
   disc::ElementValues ev(S, 2 * S.degree() + 4);
-  std::vector<double> c(S.localSize());
   double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
   PointValues v;
   for (int e : S.ownedElements()) {
     ev.reinit(e);
-    gatherCoefficients(S, overlap, x, e, c);
+    sol.gather(e);
     for (int q = 0; q < ev.numPoints(); ++q) {
-      evaluate(S, ev, c, q, v);
+      sol.evaluate(ev, q, v);
       double sigma[9], f[3], u[3], theta[3];
       exact.stress(ev.point(q), sigma);
       exact.bodyForce(ev.point(q), f);
@@ -106,24 +117,54 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
   return n;
 }
 
+double computeStressEnergyError(const MixedElasticityAssembler& assembler, const MultiVector& solution,
+                                const core::ExactSolution& exact, const core::Material& material,
+                                const Teuchos::Comm<int>& comm)
+{
+  const auto& S = assembler.space();
+  const int d = S.dim();
+  const double inv2mu = 1.0 / (2.0 * material.shearModulus()), cd = material.complianceCoefficient(d);
+  ElementSolution sol(assembler, solution);
+  disc::ElementValues ev(S, 2 * S.degree() + 4);
+  double local = 0.0, global = 0.0;
+  PointValues v;
+  for (int e : S.ownedElements()) {
+    ev.reinit(e);
+    sol.gather(e);
+    for (int q = 0; q < ev.numPoints(); ++q) {
+      sol.evaluate(ev, q, v);
+      double sigma[9], err[9], trace = 0.0;
+      exact.stress(ev.point(q), sigma);
+      for (int i = 0; i < d * d; ++i)
+        err[i] = sigma[i] - v.sigma[i];
+      for (int i = 0; i < d; ++i)
+        trace += err[i * d + i];
+      // (Aτ, τ) = (1/2μ)(|τ|² − c_d (tr τ)²).
+      double tt = 0.0;
+      for (int i = 0; i < d * d; ++i)
+        tt += err[i] * err[i];
+      local += ev.weight(q) * inv2mu * (tt - cd * trace * trace);
+    }
+  }
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 1, &local, &global);
+  return std::sqrt(std::max(global, 0.0));
+}
+
 CellAverages computeCellAverages(const MixedElasticityAssembler& assembler,
                                  const MultiVector& solution)
 {
   const auto& S = assembler.space();
   const int d = S.dim(), r = S.numRotationComponents();
-  auto overlapVec = assembler.toOverlap(solution);
-  auto x = overlapVec->getData(0);
-  const Map& overlap = *assembler.overlapMap();
+  ElementSolution sol(assembler, solution);
   disc::ElementValues ev(S, 2 * S.degree());
-  std::vector<double> c(S.localSize());
   CellAverages out;
   PointValues v;
   for (int e : S.ownedElements()) {
     ev.reinit(e);
-    gatherCoefficients(S, overlap, x, e, c);
+    sol.gather(e);
     double sigma[9] = {0}, u[3] = {0}, theta[3] = {0}, vol = 0.0;
     for (int q = 0; q < ev.numPoints(); ++q) {
-      evaluate(S, ev, c, q, v);
+      sol.evaluate(ev, q, v);
       const double w = ev.weight(q);
       vol += w;
       for (int i = 0; i < d * d; ++i)
