@@ -1,11 +1,12 @@
 #pragma once
 // The data of a scene (DESIGN §1, §9), separate from the kernels that use it (STYLE.md 2):
-// problem dimension, material, boundary conditions, contact data, and the method settings
-// (degree, linear solver, estimator, adaptivity). Each struct owns one sublist of the deck and
-// describes it in getValidParameters(); fromParameters() reads a validated list.
+// problem dimension, material, boundary conditions, contact data, and the discretisation degree.
+// Each struct owns one sublist of the deck and describes it in getValidParameters();
+// fromParameters() reads a validated list.
 //
-// The method settings live here until their packages own them (estimator #6, adapt #6); the
-// "Linear Solver" sublist belongs to sc::solvers::LinearSolverFactory.
+// The other method settings live with their packages: "Linear Solver" in
+// sc::solvers::LinearSolverFactory, "Estimator" in sc::estimator::EstimatorSettings,
+// "Adaptivity" in sc::adapt::AdaptivitySettings.
 
 #include <cmath>
 #include <string>
@@ -96,24 +97,6 @@ struct DiscretizationSettings {
   int degree = 1;  ///< k of RT_k × DP_k × CP_k (DESIGN §2)
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static DiscretizationSettings fromParameters(const Teuchos::ParameterList& list);
-};
-
-struct EstimatorSettings {
-  int reconstructionDegreeIncrease = 1;  ///< u^R in P_{k+increase} (DESIGN §4)
-  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static EstimatorSettings fromParameters(const Teuchos::ParameterList& list);
-};
-
-enum class MarkingStrategy { Dorfler, Maximum, Uniform };
-
-struct AdaptivitySettings {
-  int cycles = 0;
-  MarkingStrategy marking = MarkingStrategy::Dorfler;
-  double bulkParameter = 0.5;
-  long long maxDofs = 2000000;
-  double targetEta = 0.0;
-  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static AdaptivitySettings fromParameters(const Teuchos::ParameterList& list);
 };
 
 }  // namespace sc::core
