@@ -314,7 +314,7 @@ void Simulation::recordCycle(int cycle)
       eta["stress_energy_error"] = stressEnergyError_;
       eta["efficiency_index"] = estimate_->total() / stressEnergyError_;
     }
-    if (adaptivity_.needsIndicators())
+    if (adaptivity_.needsIndicators() && stopReason_.empty())
       eta["marked_elements"] = marked_.size();
   }
   if (!stopReason_.empty())
@@ -500,6 +500,7 @@ void Simulation::run()
         solveElasticity();
       estimate();
       stopReason_ = checkStop(cycle);
+      marked_.clear();
       if (stopReason_.empty())
         mark();
       writeFields(cycle);
