@@ -104,10 +104,13 @@ private:
 struct ErrorNorms {
   double stress = 0.0, stressDiv = 0.0, displacement = 0.0, rotation = 0.0;
   double stressNorm = 0.0, stressDivNorm = 0.0, displacementNorm = 0.0, rotationNorm = 0.0;
+  /// ‖A^{1/2}(σ − σ_h)‖ when a material is given, −1 otherwise.
+  double stressEnergy = -1.0;
 };
 
 ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiVector& solution,
-                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm);
+                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm,
+                         const core::Material* material = nullptr);
 
 /// Energy norm of the stress error ‖A^{1/2}(σ − σ_h)‖ = (A(σ − σ_h), σ − σ_h)^{1/2}, summed over
 /// ranks: the norm in which the estimator's efficiency is measured (docs/theory.md).

@@ -69,13 +69,14 @@ void ElementSolution::stress(const disc::FaceValues& fv, int q, double* sigma) c
 }
 
 ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiVector& solution,
-                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm)
+                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm,
+                         const core::Material* material)
 {
   const auto& S = assembler.space();
   const int d = S.dim(), r = S.numRotationComponents();
   ElementSolution sol(assembler, solution);
   disc::ElementValues ev(S, 2 * S.degree() + 4);
-  double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
+  double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, global[9];
   PointValues v;
   for (int e : S.ownedElements()) {
     ev.reinit(e);
@@ -88,10 +89,14 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
       exact.displacement(ev.point(q), u);
       exact.rotation(ev.point(q), theta);
       const double w = ev.weight(q);
+      double err[9];
       for (int i = 0; i < d * d; ++i) {
-        local[0] += w * std::pow(sigma[i] - v.sigma[i], 2);
+        err[i] = sigma[i] - v.sigma[i];
+        local[0] += w * err[i] * err[i];
         local[4] += w * sigma[i] * sigma[i];
       }
+      if (material)
+        local[8] += w * material->complianceEnergyDensity(err, d);
       for (int i = 0; i < d; ++i) {
         local[1] += w * std::pow(-f[i] - v.divSigma[i], 2);  // div σ = −f
         local[5] += w * f[i] * f[i];
@@ -104,7 +109,7 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
       }
     }
   }
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 8, local, global);
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 9, local, global);
   ErrorNorms n;
   n.stress = std::sqrt(global[0]);
   n.stressDiv = std::sqrt(global[1]);
@@ -114,6 +119,7 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
   n.stressDivNorm = std::sqrt(global[5]);
   n.displacementNorm = std::sqrt(global[6]);
   n.rotationNorm = std::sqrt(global[7]);
+  n.stressEnergy = material ? std::sqrt(std::max(global[8], 0.0)) : -1.0;
   return n;
 }
 
@@ -121,33 +127,7 @@ double computeStressEnergyError(const MixedElasticityAssembler& assembler, const
                                 const core::ExactSolution& exact, const core::Material& material,
                                 const Teuchos::Comm<int>& comm)
 {
-  const auto& S = assembler.space();
-  const int d = S.dim();
-  const double inv2mu = 1.0 / (2.0 * material.shearModulus()), cd = material.complianceCoefficient(d);
-  ElementSolution sol(assembler, solution);
-  disc::ElementValues ev(S, 2 * S.degree() + 4);
-  double local = 0.0, global = 0.0;
-  PointValues v;
-  for (int e : S.ownedElements()) {
-    ev.reinit(e);
-    sol.gather(e);
-    for (int q = 0; q < ev.numPoints(); ++q) {
-      sol.evaluate(ev, q, v);
-      double sigma[9], err[9], trace = 0.0;
-      exact.stress(ev.point(q), sigma);
-      for (int i = 0; i < d * d; ++i)
-        err[i] = sigma[i] - v.sigma[i];
-      for (int i = 0; i < d; ++i)
-        trace += err[i * d + i];
-      // (Aτ, τ) = (1/2μ)(|τ|² − c_d (tr τ)²).
-      double tt = 0.0;
-      for (int i = 0; i < d * d; ++i)
-        tt += err[i] * err[i];
-      local += ev.weight(q) * inv2mu * (tt - cd * trace * trace);
-    }
-  }
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 1, &local, &global);
-  return std::sqrt(std::max(global, 0.0));
+  return computeErrors(assembler, solution, exact, comm, &material).stressEnergy;
 }
 
 CellAverages computeCellAverages(const MixedElasticityAssembler& assembler,

@@ -37,6 +37,17 @@ struct Material {
   {
     return poissonRatio / (1.0 + (dim - 2) * poissonRatio);
   }
+  /// Aτ:τ = (1/2μ)(|τ|² − c_d (tr τ)²) for a d×d row-major τ: the compliance energy density, in
+  /// which the estimator's efficiency and the Target error norm are measured (docs/theory.md).
+  double complianceEnergyDensity(const double* tau, int dim) const
+  {
+    double tt = 0.0, trace = 0.0;
+    for (int i = 0; i < dim * dim; ++i)
+      tt += tau[i] * tau[i];
+    for (int i = 0; i < dim; ++i)
+      trace += tau[i * dim + i];
+    return (tt - complianceCoefficient(dim) * trace * trace) / (2.0 * shearModulus());
+  }
   /// Plane-strain modulus E* = E/(1 − ν²) used by the Hertz formulas (DESIGN §9).
   double planeStrainModulus() const
   {

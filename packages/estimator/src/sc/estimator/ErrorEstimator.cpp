@@ -81,12 +81,10 @@ ErrorEstimate ErrorEstimator::estimate(const assembly::MultiVector& solution,
     for (int q = 0; q < ev.numPoints(); ++q) {
       sol.evaluate(ev, q, v);
       const double w = ev.weight(q);
-      double trace = 0.0, ss = 0.0;
+      double trace = 0.0;
       for (int i = 0; i < d; ++i)
         trace += v.sigma[i * d + i];
-      for (int i = 0; i < d * d; ++i)
-        ss += v.sigma[i] * v.sigma[i];
-      norm += w * (ss - cd * trace * trace) / twoMu;
+      norm += w * data.material.complianceEnergyDensity(v.sigma, d);
       for (int i = 0; i < d; ++i)
         for (int j = 0; j < d; ++j) {
           const double Asigma = (v.sigma[i * d + j] - (i == j ? cd * trace : 0.0)) / twoMu;
