@@ -62,7 +62,8 @@ namespace sc::app {
 class Simulation {
 public:
   /// Reads the validated parameter list; throws InputError for combinations that this build
-  /// cannot run (e.g. Dorfler marking without an estimator), before any work.
+  /// cannot run (e.g. Dorfler marking of a contact scene: no contact terms in the estimator yet),
+  /// before any work.
   Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
              Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath, bool quiet);
   ~Simulation();
