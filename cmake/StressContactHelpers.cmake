@@ -19,6 +19,19 @@ endif()
 function(sc_add_package name)
   cmake_parse_arguments(P "" "" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
   set(tgt sc_${name})
+  # The package order (docs/architecture.md) is enforced here: CMake itself lets a target link one
+  # defined later, so a package may link only the StressContact packages added before it.
+  get_property(defined GLOBAL PROPERTY SC_PACKAGES)
+  foreach(lib IN LISTS P_PUBLIC_LIBS P_PRIVATE_LIBS)
+    if(lib MATCHES "^sc_(.+)$")
+      set(dep ${CMAKE_MATCH_1})
+      if(NOT dep IN_LIST defined)
+        message(FATAL_ERROR "package '${name}' links '${lib}', which is not defined before it. A "
+                            "package may use only the packages added before it in "
+                            "packages/CMakeLists.txt (docs/architecture.md); defined so far: ${defined}")
+      endif()
+    endif()
+  endforeach()
   add_library(${tgt} ${P_SOURCES})
   add_library(StressContact::${name} ALIAS ${tgt})
   set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME stresscontact_${name}

@@ -3,10 +3,12 @@
 #include <cstdlib>
 #include <fstream>
 
+#include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
 #include <sc/core/ProblemData.hpp>
+#include <sc/estimator/EstimatorSettings.hpp>
 #include <sc/io/OutputSettings.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
@@ -49,10 +51,10 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
         "Finite element spaces (DESIGN §2).");
     add("Linear Solver", solvers::LinearSolverFactory::getValidParameters(),
         "Linear solver of each (Newton) step (DESIGN §6).");
-    add("Estimator", core::EstimatorSettings::getValidParameters(),
-        "Reconstruction-based a posteriori error estimator (DESIGN §4).");
-    add("Adaptivity", core::AdaptivitySettings::getValidParameters(),
-        "Solve-estimate-mark-refine cycles (DESIGN §5).");
+    add("Estimator", estimator::EstimatorSettings::getValidParameters(),
+        "Reconstruction-based a posteriori error estimator (docs/theory.md).");
+    add("Adaptivity", adapt::AdaptivitySettings::getValidParameters(),
+        "Solve-estimate-mark-refine cycles (docs/theory.md).");
     add(io::OutputSettings::sublistName, io::OutputSettings::getValidParameters(),
         "Output files (docs/output.md).");
     return pl;

@@ -14,6 +14,8 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <sc/adapt/Marker.hpp>
+#include <sc/adapt/StopCriteria.hpp>
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
@@ -22,6 +24,8 @@
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/estimator/DisplacementReconstruction.hpp>
+#include <sc/estimator/ErrorEstimator.hpp>
 #include <sc/solvers/DirectSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <sc/io/OutputDirectory.hpp>
@@ -52,15 +56,21 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);
-  adaptivity_ = core::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
+  estimatorSettings_ = estimator::EstimatorSettings::fromParameters(params_->sublist("Estimator"));
+  adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
+  marker_ = adapt::createMarker(adaptivity_);
+  stop_ = std::make_unique<adapt::StopCriteria>(adaptivity_);
 
-  SC_THROW_IF(adaptivity_.cycles > 0 && adaptivity_.marking != core::MarkingStrategy::Uniform,
+  // The estimator has no contact terms yet (η_CF, issue #9): a contact scene gets no indicators.
+  SC_THROW_IF(boundaryConditions_.hasContact() && adaptivity_.cycles > 0 &&
+                  adaptivity_.needsIndicators(),
               core::InputError,
-              "'Adaptivity/Marking' = '" << params_->sublist("Adaptivity").get<std::string>("Marking")
-                  << "' with 'Adaptivity/Cycles' = " << adaptivity_.cycles
-                  << " needs error indicators, and this build has no estimator yet (issue #6). "
-                  << "Valid now: 'Uniform', or Cycles = 0.");
+              "'Adaptivity/Marking' = '" << adaptivity_.marking << "' with 'Adaptivity/Cycles' = "
+                  << adaptivity_.cycles
+                  << " needs error indicators, and the estimator has no contact terms yet "
+                  << "(η_CF, issue #9), so a scene with a Contact boundary cannot be marked. "
+                  << "Valid for contact scenes now: 'Uniform', or Cycles = 0.");
 
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
@@ -89,7 +99,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   solver_ = solvers::createDirectSolver(params_->sublist("Linear Solver"));
 
   // What this build cannot compute yet, stated rather than faked.
-  phasesMissing_.push_back("error estimator (issue #6)");
+  if (boundaryConditions_.hasContact())
+    phasesMissing_.push_back("error estimator with contact terms (eta_CF, issue #9)");
 }
 
 Simulation::~Simulation() = default;
@@ -154,10 +165,18 @@ void Simulation::warnIfLargeDisplacement() const
 void Simulation::refineMesh()
 {
   auto t = timers_.scope("refine");
-  // Only uniform marking exists until the estimator (#6) provides indicators.
-  refiner_->refineUniformly();
+  const long long before = mesh_->numElements();
+  if (adaptivity_.needsIndicators()) {
+    refiner_->refine(marked_);
+  } else {
+    // Uniform: dim bisections of every element (exactly ×4 in 2D), as in convergence studies.
+    refiner_->refineUniformly();
+  }
+  // The loop does not transfer anything between meshes yet: the history is not needed.
+  refiner_->forgetHistory();
   mesh_ = refiner_->mesh();
-  progress_.report("refine", "uniform: " + std::to_string(mesh_->numElements()) + " elements");
+  progress_.report("refine", adaptivity_.marking + ": " + std::to_string(before) + " -> " +
+                                 std::to_string(mesh_->numElements()) + " elements");
 }
 
 void Simulation::partitionMesh()
@@ -276,6 +295,49 @@ void Simulation::solveContact(int cycle)
   }
 }
 
+void Simulation::estimate()
+{
+  estimate_.reset();
+  stressEnergyError_ = -1.0;
+  if (contactSolver_ || !solved_)
+    return;  // no contact terms yet (phases_missing)
+  {
+    auto t = timers_.scope("estimate");
+    estimator_ = std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);
+    estimate_ = std::make_unique<estimator::ErrorEstimate>(
+        estimator_->estimate(*solution_, {material_, boundaryConditions_, exact_.get()}));
+  }
+  std::ostringstream os;
+  os << space_->numGlobalDofs() << " DOFs, eta = " << estimate_->total() << " (";
+  for (std::size_t i = 0; i < estimate_->parts.size(); ++i)
+    os << (i ? ", " : "") << estimate_->parts[i].first << " " << std::sqrt(estimate_->parts[i].second);
+  os << "), eta / |A^1/2 sigma_h| = " << estimate_->total() / estimate_->stressEnergyNorm;
+  if (exact_) {
+    auto t = timers_.scope("errors");
+    stressEnergyError_ = assembly::computeStressEnergyError(*assembler_, *solution_, *exact_, material_, *comm_);
+    os << ", efficiency index " << estimate_->total() / stressEnergyError_;
+  }
+  progress_.report("estimate", os.str());
+}
+
+std::string Simulation::checkStop(int cycle)
+{
+  const double eta = estimate_ ? estimate_->total() : -1.0;
+  const double norm = estimate_ ? estimate_->stressEnergyNorm : -1.0;
+  return stop_->reason(cycle, solved_ ? space_->numGlobalDofs() : 0, eta, norm);
+}
+
+void Simulation::mark()
+{
+  marked_.clear();
+  if (!adaptivity_.needsIndicators())
+    return;
+  auto t = timers_.scope("mark");
+  marked_ = marker_->mark(mesh_->numElements(), space_->ownedElements(), estimate_->indicators, *comm_);
+  progress_.report("mark", marker_->name() + ": " + std::to_string(marked_.size()) + " of " +
+                               std::to_string(mesh_->numElements()) + " elements");
+}
+
 void Simulation::checkScene()
 {
   setupMesh();
@@ -311,6 +373,22 @@ void Simulation::recordCycle(int cycle)
        << cs.stickZoneSize << " (" << cs.numStick << " stick, " << cs.numSlip << " slip points)";
     progress_.report("contact", os.str());
   }
+  if (estimate_) {
+    auto& eta = c["eta"];
+    eta["total"] = estimate_->total();
+    for (const auto& p : estimate_->parts)
+      eta[p.first] = std::sqrt(p.second);
+    eta["stress_energy_norm"] = estimate_->stressEnergyNorm;
+    eta["relative"] = estimate_->total() / estimate_->stressEnergyNorm;
+    if (stressEnergyError_ >= 0.0) {
+      eta["stress_energy_error"] = stressEnergyError_;
+      eta["efficiency_index"] = estimate_->total() / stressEnergyError_;
+    }
+    if (adaptivity_.needsIndicators() && stopReason_.empty())
+      eta["marked_elements"] = marked_.size();
+  }
+  if (!stopReason_.empty())
+    c["stop_reason"] = stopReason_;
   if (solved_) {
     c["dofs"] = {{"stress", space_->numStressDofs()},
                  {"displacement", space_->numDisplacementDofs()},
@@ -395,6 +473,21 @@ void Simulation::writeFields(int cycle)
     measure.push_back(mesh_->elementMeasure(static_cast<int>(e)));
   }
   domain.addCellField("element_measure", io::FieldKind::Scalar, std::move(measure));
+  if (estimate_) {
+    // η_T of the owned elements (same order as the loop above: ownedElements() is ascending),
+    // and u^R at the owned vertices as a point field (ParaView: Warp By Vector).
+    std::vector<double> etaT;
+    for (double v : estimate_->indicators)
+      etaT.push_back(std::sqrt(v));
+    domain.addCellField("eta", io::FieldKind::Scalar, std::move(etaT));
+    std::vector<double> uR;
+    for (std::size_t v : ownedVertices) {
+      double u[3];
+      estimator_->reconstruction().vertexValue(static_cast<int>(v), u);
+      uR.insert(uR.end(), u, u + dim);
+    }
+    domain.addPointField("reconstructed_displacement", io::FieldKind::Vector, std::move(uR));
+  }
   if (solved_) {
     // Cell averages, in the order of the rank's owned elements (the loop above).
     auto avg = assembly::computeCellAverages(*assembler_, *solution_);
@@ -476,7 +569,7 @@ void Simulation::run()
     writer_ = std::make_unique<io::XdmfWriter>(comm_, output_.directory, output_.baseName);
 
   try {
-    for (int cycle = 0; cycle <= adaptivity_.cycles; ++cycle) {
+    for (int cycle = 0;; ++cycle) {
       progress_.setCycle(cycle, adaptivity_.cycles);
       if (cycle > 0)
         refineMesh();
@@ -485,11 +578,20 @@ void Simulation::run()
         solveContact(cycle);
       else
         solveElasticity();
+      estimate();
+      stopReason_ = checkStop(cycle);
+      marked_.clear();
+      if (stopReason_.empty())
+        mark();
       writeFields(cycle);
       recordCycle(cycle);
       summary_->currentCycle()["timings"] = timers_.cycleTimings();
       timers_.nextCycle();
       summary_->write();
+      if (!stopReason_.empty()) {
+        progress_.report("stop", stopReason_);
+        break;
+      }
     }
     // A scene whose contact could not be solved (issue #5) is not "converged".
     summary_->setConverged(solved_);

@@ -1,11 +1,13 @@
 #pragma once
 // One run of StressContact, in the deal.II tutorial shape: a constructor that reads and checks
-// everything, then run() = for each cycle { mesh, solve, estimate, output, refine }.
+// everything, then run() = for each cycle { refine, solve, estimate, mark, output }, until a
+// stop criterion of sc::adapt holds (Cycles, Max DOFs, Target error).
 //
-// What each cycle does depends on what the scene needs (DESIGN §1): no contact machinery
-// without a Contact boundary, no friction rows when the law is None or μ_F = 0. Phases whose
-// packages do not exist yet (the estimator, #6) are reported as absent in summary.json
-// ("phases_missing"), never faked.
+// What each cycle does depends on what the scene needs (docs/theory.md): no contact machinery
+// without a Contact boundary, no friction rows when the law is None or μ_F = 0. Phases that do
+// not exist yet (the contact terms of the estimator, η_CF) are reported as absent in
+// summary.json ("phases_missing"), never faked: a contact scene is not estimated and can only be
+// refined uniformly.
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,9 +17,11 @@
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_MultiVector_fwd.hpp>
 
+#include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
 #include <sc/core/Timers.hpp>
+#include <sc/estimator/EstimatorSettings.hpp>
 #include <sc/io/OutputSettings.hpp>
 
 namespace sc::mesh {
@@ -40,6 +44,14 @@ class DirectSolver;
 namespace sc::core {
 class ExactSolution;
 }
+namespace sc::estimator {
+class ErrorEstimator;
+struct ErrorEstimate;
+}  // namespace sc::estimator
+namespace sc::adapt {
+class Marker;
+class StopCriteria;
+}  // namespace sc::adapt
 namespace sc::contact {
 class ActiveSetSolver;
 struct ContactPoint;
@@ -54,7 +66,8 @@ inline constexpr double kLargeDisplacementFraction = 0.05;
 class Simulation {
 public:
   /// Reads the validated parameter list; throws InputError for combinations that this build
-  /// cannot run (e.g. Dorfler marking without an estimator), before any work.
+  /// cannot run (e.g. Dorfler marking of a contact scene: no contact terms in the estimator yet),
+  /// before any work.
   Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
              Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath, bool quiet);
   ~Simulation();
@@ -75,6 +88,10 @@ private:
   void setupElasticity();
   void solveElasticity();
   void solveContact(int cycle);
+  void estimate();
+  /// The reason to stop after this cycle ("" = go on), then the marking for the next one.
+  std::string checkStop(int cycle);
+  void mark();
   void writeFields(int cycle);
   void recordCycle(int cycle);
 
@@ -88,7 +105,8 @@ private:
   core::BoundaryConditions boundaryConditions_;
   core::ContactSettings contact_;
   core::DiscretizationSettings discretization_;
-  core::AdaptivitySettings adaptivity_;
+  estimator::EstimatorSettings estimatorSettings_;
+  adapt::AdaptivitySettings adaptivity_;
   io::OutputSettings output_;
 
   core::Progress progress_;
@@ -98,6 +116,8 @@ private:
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
   std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element
   std::vector<std::string> phasesMissing_;
+  std::unique_ptr<adapt::Marker> marker_;
+  std::unique_ptr<adapt::StopCriteria> stop_;
 
   // Mixed elasticity (no contact boundary): spaces, system, solver, solution of the cycle.
   std::unique_ptr<core::ExactSolution> exact_;
@@ -106,6 +126,13 @@ private:
   Teuchos::RCP<solvers::DirectSolver> solver_;
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;
   bool solved_ = false;
+
+  // Estimate and marking of the cycle (elasticity scenes).
+  std::unique_ptr<estimator::ErrorEstimator> estimator_;
+  std::unique_ptr<estimator::ErrorEstimate> estimate_;
+  double stressEnergyError_ = -1.0;  ///< ‖A^{1/2}(σ − σ_h)‖ when the exact solution is known
+  std::vector<int> marked_;          ///< elements to bisect for the next cycle
+  std::string stopReason_;
 
   // Contact (a boundary of Type Contact): the active-set solver of the cycle and the points of
   // the previous cycle (nested iteration: the next cycle starts from their state).

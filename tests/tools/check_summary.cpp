@@ -7,13 +7,20 @@
 //     ge:/json/pointer=VALUE  le:/json/pointer=VALUE
 //     size:/json/pointer=N                array or object has N entries
 //     exists:/json/pointer
-//   A pointer component "-1" means the last element of an array.
+//     rate:FIRST:LAST=MIN:MAX             the convergence rate of η in DOFs over cycles FIRST..LAST
+//                                         (least-squares −slope of log eta/total against log
+//                                         dofs/total) lies in [MIN, MAX]
+//     decreasing:FIRST                    eta/total strictly decreases from cycle FIRST on
+//   A pointer component or cycle index "-1" means the last element of an array.
 // Prints one line per check (measured value, expected, tolerance) and exits 1 if any failed.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -44,6 +51,52 @@ const json* resolve(const json& root, const std::string& pointer)
   return node;
 }
 
+// The cycles FIRST..LAST (negative: from the end) as (log DOFs, log η) pairs.
+std::vector<std::pair<double, double>> etaAgainstDofs(const json& root, long first, long last)
+{
+  std::vector<std::pair<double, double>> points;
+  const json& cycles = root.at("cycles");
+  const long n = static_cast<long>(cycles.size());
+  if (first < 0)
+    first += n;
+  if (last < 0)
+    last += n;
+  for (long i = std::max(first, 0L); i <= std::min(last, n - 1); ++i)
+    points.emplace_back(std::log(cycles[i].at("dofs").at("total").get<double>()),
+                        std::log(cycles[i].at("eta").at("total").get<double>()));
+  return points;
+}
+
+bool checkEta(const json& root, const std::string& kind, const std::string& rest, std::ostringstream& msg)
+{
+  if (kind == "decreasing") {
+    const auto p = etaAgainstDofs(root, std::stol(rest), -1);
+    bool ok = p.size() >= 2;
+    for (std::size_t i = 1; i < p.size(); ++i)
+      ok = ok && p[i].second < p[i - 1].second;
+    msg << "eta/total over " << p.size() << " cycles from cycle " << rest << (ok ? " decreases" : " does not decrease");
+    return ok;
+  }
+  // rate:FIRST:LAST=MIN:MAX
+  const auto eq = rest.find('=');
+  const std::string range = rest.substr(0, eq), bounds = rest.substr(eq + 1);
+  const auto c1 = range.find(':'), c2 = bounds.find(':');
+  const auto p = etaAgainstDofs(root, std::stol(range.substr(0, c1)), std::stol(range.substr(c1 + 1)));
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = static_cast<double>(p.size());
+  for (const auto& [x, y] : p) {
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double rate = -(n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double lo = std::stod(bounds.substr(0, c2)), hi = std::stod(bounds.substr(c2 + 1));
+  msg << "rate of eta in DOFs over cycles " << range << " (" << p.size() << " cycles): " << rate
+      << ", expected in [" << lo << ", " << hi << "]";
+  return p.size() >= 2 && rate >= lo && rate <= hi;
+}
+
 }  // namespace
 
 int main(int argc, char* argv[])
@@ -69,6 +122,19 @@ int main(int argc, char* argv[])
     const std::string check = argv[a];
     const auto colon = check.find(':');
     const std::string kind = check.substr(0, colon);
+    if (kind == "rate" || kind == "decreasing") {
+      std::ostringstream msg;
+      msg << kind << " ";
+      bool ok = false;
+      try {
+        ok = checkEta(root, kind, check.substr(colon + 1), msg);
+      } catch (const std::exception& e) {
+        msg << "cannot evaluate: " << e.what();
+      }
+      std::cout << (ok ? "  ok    " : "  FAIL  ") << msg.str() << "\n";
+      failures += ok ? 0 : 1;
+      continue;
+    }
     std::string rest = check.substr(colon + 1), pointer = rest, expected, tol;
     if (const auto eq = rest.find('='); eq != std::string::npos) {
       pointer = rest.substr(0, eq);

@@ -2,6 +2,7 @@
 // Shared by the assembly tests: solve a verification problem (an exact solution with Dirichlet
 // data on some sides and tractions on the others) on a scene mesh with uniform refinements.
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,18 @@ struct VerificationSetup {
   /// false: level l is the previous level refined uniformly (bisection); true: level l is a new
   /// Gmsh mesh of size meshSize / 2^l (same element quality on every level).
   bool remesh = false;
+  /// true: every element on rank 0 (the serial partition, run on all ranks of the communicator),
+  /// to compare a parallel partition with it in one run.
+  bool allOnRankZero = false;
+  /// Boundary conditions other than verificationBoundaryConditions (with exact = "None": a scene
+  /// driven by constant data; the errors are then not computed).
+  std::vector<core::BoundaryCondition> boundaryConditions;
 };
+
+/// Called on every level after the solve, for tests that postprocess the solution (estimator).
+using LevelCallback = std::function<void(int level, const assembly::MixedElasticityAssembler&,
+                                         const Tpetra::MultiVector<>& solution,
+                                         const assembly::ElasticityData& data)>;
 
 /// Boundary data: displacement from the exact solution on Left/Bottom(/Front), traction on the rest.
 inline core::BoundaryConditions verificationBoundaryConditions(int dim)
@@ -61,7 +73,8 @@ inline core::BoundaryConditions verificationBoundaryConditions(int dim)
 }
 
 inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
-                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
+                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                                  const LevelCallback& onLevel = {})
 {
   Teuchos::ParameterList meshList;
   meshList.set("Source", s.source);
@@ -83,10 +96,13 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
       refiner->refineUniformly();
     }
     auto m = refiner->mesh();
-    auto owner = mesh::partitionElements(*m, *comm);
+    auto owner = s.allOnRankZero ? std::vector<int>(m->numElements(), 0)
+                                 : mesh::partitionElements(*m, *comm);
     auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank()));
     assembly::MixedElasticityAssembler assembler(space, comm);
     assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};
+    if (!s.boundaryConditions.empty())
+      data.boundaryConditions.conditions = s.boundaryConditions;
     assembler.assemble(data);
     auto x = assembler.createVector();
     solver->setOperator(assembler.matrix());
@@ -98,7 +114,10 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
     // level, unlike the largest diameter (3D bisection leaves long edges for a while).
     r.h = std::pow(m->measure() / m->numElements(), 1.0 / s.dim);
     r.dofs = space->numGlobalDofs();
-    r.errors = assembly::computeErrors(assembler, *x, *exact, *comm);
+    if (exact)
+      r.errors = assembly::computeErrors(assembler, *x, *exact, *comm);
+    if (onLevel)
+      onLevel(level, assembler, *x, data);
     results.push_back(r);
   }
   return results;

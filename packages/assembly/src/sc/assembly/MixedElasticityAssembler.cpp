@@ -53,6 +53,15 @@ void solveDense(std::vector<double> M, std::vector<double>& r, int n)
 
 }  // namespace
 
+const std::vector<AsymmetryTerm>& asymmetryTerms(int dim)
+{
+  static const std::vector<AsymmetryTerm> terms2D = {{0, 0, 1, 1.0}, {0, 1, 0, -1.0}};
+  static const std::vector<AsymmetryTerm> terms3D = {{0, 2, 1, 1.0}, {0, 1, 2, -1.0},
+                                                     {1, 0, 2, 1.0}, {1, 2, 0, -1.0},
+                                                     {2, 1, 0, 1.0}, {2, 0, 1, -1.0}};
+  return dim == 2 ? terms2D : terms3D;
+}
+
 struct MixedElasticityAssembler::Impl {
   Teuchos::RCP<const Map> owned, overlap;
   Teuchos::RCP<FEGraph> graph;
@@ -201,18 +210,10 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       for (int a = 0; a < nCP; ++a)
         for (int bb = 0; bb < nRT; ++bb) {
           const double eta = w * ev.rotation(a, q);
-          // as τ: 2D τ12 − τ21; 3D (τ32 − τ23, τ13 − τ31, τ21 − τ12) (DESIGN §1), 0-based
-          // (row, component) pairs with their sign.
-          struct Term { int comp, row, col; double sign; };
-          static const Term terms2D[] = {{0, 0, 1, 1.0}, {0, 1, 0, -1.0}};
-          static const Term terms3D[] = {{0, 2, 1, 1.0}, {0, 1, 2, -1.0}, {1, 0, 2, 1.0},
-                                         {1, 2, 0, -1.0}, {2, 1, 0, 1.0}, {2, 0, 1, -1.0}};
-          const Term* terms = d == 2 ? terms2D : terms3D;
-          const int nTerms = d == 2 ? 2 : 6;
-          for (int t = 0; t < nTerms; ++t) {
-            const double v = terms[t].sign * eta * ev.stress(bb, q, terms[t].col);
-            KK(S.rotationOffset(terms[t].comp) + a, S.stressOffset(terms[t].row) + bb) += v;
-            KK(S.stressOffset(terms[t].row) + bb, S.rotationOffset(terms[t].comp) + a) += v;
+          for (const auto& t : asymmetryTerms(d)) {
+            const double v = t.sign * eta * ev.stress(bb, q, t.col);
+            KK(S.rotationOffset(t.comp) + a, S.stressOffset(t.row) + bb) += v;
+            KK(S.stressOffset(t.row) + bb, S.rotationOffset(t.comp) + a) += v;
           }
         }
       if (exact) {

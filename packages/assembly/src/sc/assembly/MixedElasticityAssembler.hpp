@@ -34,6 +34,17 @@ using Map = Tpetra::Map<>;
 using CrsMatrix = Tpetra::CrsMatrix<>;
 using MultiVector = Tpetra::MultiVector<>;
 
+/// One term of the weak symmetry (as τ)_comp = Σ sign · τ_{row,col} (DESIGN §1: 2D τ12 − τ21;
+/// 3D (τ32 − τ23, τ13 − τ31, τ21 − τ12)), 0-based. The same table defines the skew matrix S(θ)
+/// with S:τ = θ · as τ (S_{row,col} = sign · θ_comp), which the displacement reconstruction adds to
+/// Aσ_h (docs/theory.md): one definition, so the two cannot disagree on the sign.
+struct AsymmetryTerm {
+  int comp, row, col;
+  double sign;
+};
+/// The terms of as τ in dimension d (2 terms in 2D, 6 in 3D).
+const std::vector<AsymmetryTerm>& asymmetryTerms(int dim);
+
 /// The data the elasticity system needs. Boundary parts not named in `boundaryConditions` are
 /// traction-free. With an exact solution, f = −div σ comes from it, and boundary conditions with
 /// `fromExactSolution` take u_D or t from it.
@@ -93,10 +104,19 @@ private:
 struct ErrorNorms {
   double stress = 0.0, stressDiv = 0.0, displacement = 0.0, rotation = 0.0;
   double stressNorm = 0.0, stressDivNorm = 0.0, displacementNorm = 0.0, rotationNorm = 0.0;
+  /// ‖A^{1/2}(σ − σ_h)‖ when a material is given, −1 otherwise.
+  double stressEnergy = -1.0;
 };
 
 ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiVector& solution,
-                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm);
+                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm,
+                         const core::Material* material = nullptr);
+
+/// Energy norm of the stress error ‖A^{1/2}(σ − σ_h)‖ = (A(σ − σ_h), σ − σ_h)^{1/2}, summed over
+/// ranks: the norm in which the estimator's efficiency is measured (docs/theory.md).
+double computeStressEnergyError(const MixedElasticityAssembler& assembler, const MultiVector& solution,
+                                const core::ExactSolution& exact, const core::Material& material,
+                                const Teuchos::Comm<int>& comm);
 
 /// Cell averages of the solution on this rank's owned elements (in ownedElements() order), for
 /// output: σ (d×d row-major), von Mises stress, pressure −tr σ / d, u (d), θ (r).

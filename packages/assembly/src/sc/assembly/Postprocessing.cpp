@@ -1,4 +1,5 @@
 // Errors against exact solutions and cell averages for output (issue #4 item 4).
+#include <algorithm>
 #include <cmath>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -8,28 +9,31 @@
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 
+#include "sc/assembly/ElementSolution.hpp"
 #include "sc/assembly/MixedElasticityAssembler.hpp"
 
 namespace sc::assembly {
-namespace {
 
-// The element's coefficients from an overlap-map vector.
-void gatherCoefficients(const disc::MixedElasticitySpace& S, const Map& overlap,
-                        const Teuchos::ArrayRCP<const double>& x, int e, std::vector<double>& c)
+ElementSolution::ElementSolution(const MixedElasticityAssembler& assembler, const MultiVector& solution)
+  : space_(assembler.space()), overlapMap_(assembler.overlapMap()),
+    overlap_(assembler.toOverlap(solution)), x_(overlap_->getData(0)),
+    c_(static_cast<std::size_t>(assembler.space().localSize()))
 {
-  const long long* g = S.elementDofs(e);
-  for (int i = 0; i < S.localSize(); ++i)
-    c[i] = x[overlap.getLocalElement(g[i])];
 }
 
-// σ_h, div σ_h, u_h, θ_h of one element at cubature point q.
-struct PointValues {
-  double sigma[9], divSigma[3], u[3], theta[3];
-};
+ElementSolution::~ElementSolution() = default;
 
-void evaluate(const disc::MixedElasticitySpace& S, const disc::ElementValues& ev,
-              const std::vector<double>& c, int q, PointValues& v)
+void ElementSolution::gather(int e)
 {
+  const long long* g = space_.elementDofs(e);
+  for (int i = 0; i < space_.localSize(); ++i)
+    c_[i] = x_[overlapMap_->getLocalElement(g[i])];
+}
+
+void ElementSolution::evaluate(const disc::ElementValues& ev, int q, PointValues& v) const
+{
+  const auto& S = space_;
+  const auto& c = c_;
   const int d = S.dim(), nRT = S.stressBasisSize(), nP = S.displacementBasisSize();
   for (int i = 0; i < d; ++i) {
     v.divSigma[i] = 0.0;
@@ -52,35 +56,47 @@ void evaluate(const disc::MixedElasticitySpace& S, const disc::ElementValues& ev
   }
 }
 
-}  // namespace
+void ElementSolution::stress(const disc::FaceValues& fv, int q, double* sigma) const
+{
+  const int d = space_.dim(), nRT = space_.stressBasisSize();
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j) {
+      double s = 0.0;
+      for (int a = 0; a < nRT; ++a)
+        s += c_[space_.stressOffset(i) + a] * fv.stress(a, q, j);
+      sigma[i * d + j] = s;
+    }
+}
 
 ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiVector& solution,
-                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm)
+                         const core::ExactSolution& exact, const Teuchos::Comm<int>& comm,
+                         const core::Material* material)
 {
   const auto& S = assembler.space();
   const int d = S.dim(), r = S.numRotationComponents();
-  auto overlapVec = assembler.toOverlap(solution);
-  auto x = overlapVec->getData(0);
-  const Map& overlap = *assembler.overlapMap();
+  ElementSolution sol(assembler, solution);
   disc::ElementValues ev(S, 2 * S.degree() + 4);
-  std::vector<double> c(S.localSize());
-  double local[8] = {0, 0, 0, 0, 0, 0, 0, 0}, global[8];
+  double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, global[9];
   PointValues v;
   for (int e : S.ownedElements()) {
     ev.reinit(e);
-    gatherCoefficients(S, overlap, x, e, c);
+    sol.gather(e);
     for (int q = 0; q < ev.numPoints(); ++q) {
-      evaluate(S, ev, c, q, v);
+      sol.evaluate(ev, q, v);
       double sigma[9], f[3], u[3], theta[3];
       exact.stress(ev.point(q), sigma);
       exact.bodyForce(ev.point(q), f);
       exact.displacement(ev.point(q), u);
       exact.rotation(ev.point(q), theta);
       const double w = ev.weight(q);
+      double err[9];
       for (int i = 0; i < d * d; ++i) {
-        local[0] += w * std::pow(sigma[i] - v.sigma[i], 2);
+        err[i] = sigma[i] - v.sigma[i];
+        local[0] += w * err[i] * err[i];
         local[4] += w * sigma[i] * sigma[i];
       }
+      if (material)
+        local[8] += w * material->complianceEnergyDensity(err, d);
       for (int i = 0; i < d; ++i) {
         local[1] += w * std::pow(-f[i] - v.divSigma[i], 2);  // div σ = −f
         local[5] += w * f[i] * f[i];
@@ -93,7 +109,7 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
       }
     }
   }
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 8, local, global);
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 9, local, global);
   ErrorNorms n;
   n.stress = std::sqrt(global[0]);
   n.stressDiv = std::sqrt(global[1]);
@@ -103,7 +119,15 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
   n.stressDivNorm = std::sqrt(global[5]);
   n.displacementNorm = std::sqrt(global[6]);
   n.rotationNorm = std::sqrt(global[7]);
+  n.stressEnergy = material ? std::sqrt(std::max(global[8], 0.0)) : -1.0;
   return n;
+}
+
+double computeStressEnergyError(const MixedElasticityAssembler& assembler, const MultiVector& solution,
+                                const core::ExactSolution& exact, const core::Material& material,
+                                const Teuchos::Comm<int>& comm)
+{
+  return computeErrors(assembler, solution, exact, comm, &material).stressEnergy;
 }
 
 CellAverages computeCellAverages(const MixedElasticityAssembler& assembler,
@@ -111,19 +135,16 @@ CellAverages computeCellAverages(const MixedElasticityAssembler& assembler,
 {
   const auto& S = assembler.space();
   const int d = S.dim(), r = S.numRotationComponents();
-  auto overlapVec = assembler.toOverlap(solution);
-  auto x = overlapVec->getData(0);
-  const Map& overlap = *assembler.overlapMap();
+  ElementSolution sol(assembler, solution);
   disc::ElementValues ev(S, 2 * S.degree());
-  std::vector<double> c(S.localSize());
   CellAverages out;
   PointValues v;
   for (int e : S.ownedElements()) {
     ev.reinit(e);
-    gatherCoefficients(S, overlap, x, e, c);
+    sol.gather(e);
     double sigma[9] = {0}, u[3] = {0}, theta[3] = {0}, vol = 0.0;
     for (int q = 0; q < ev.numPoints(); ++q) {
-      evaluate(S, ev, c, q, v);
+      sol.evaluate(ev, q, v);
       const double w = ev.weight(q);
       vol += w;
       for (int i = 0; i < d * d; ++i)

@@ -1,11 +1,12 @@
 #pragma once
 // The data of a scene (DESIGN §1, §9), separate from the kernels that use it (STYLE.md 2):
-// problem dimension, material, boundary conditions, contact data, and the method settings
-// (degree, linear solver, estimator, adaptivity). Each struct owns one sublist of the deck and
-// describes it in getValidParameters(); fromParameters() reads a validated list.
+// problem dimension, material, boundary conditions, contact data, and the discretisation degree.
+// Each struct owns one sublist of the deck and describes it in getValidParameters();
+// fromParameters() reads a validated list.
 //
-// The method settings live here until their packages own them (estimator #6, adapt #6); the
-// "Linear Solver" sublist belongs to sc::solvers::LinearSolverFactory.
+// The other method settings live with their packages: "Linear Solver" in
+// sc::solvers::LinearSolverFactory, "Estimator" in sc::estimator::EstimatorSettings,
+// "Adaptivity" in sc::adapt::AdaptivitySettings.
 
 #include <cmath>
 #include <string>
@@ -35,6 +36,17 @@ struct Material {
   double complianceCoefficient(int dim) const
   {
     return poissonRatio / (1.0 + (dim - 2) * poissonRatio);
+  }
+  /// Aτ:τ = (1/2μ)(|τ|² − c_d (tr τ)²) for a d×d row-major τ: the compliance energy density, in
+  /// which the estimator's efficiency and the Target error norm are measured (docs/theory.md).
+  double complianceEnergyDensity(const double* tau, int dim) const
+  {
+    double tt = 0.0, trace = 0.0;
+    for (int i = 0; i < dim * dim; ++i)
+      tt += tau[i] * tau[i];
+    for (int i = 0; i < dim; ++i)
+      trace += tau[i * dim + i];
+    return (tt - complianceCoefficient(dim) * trace * trace) / (2.0 * shearModulus());
   }
   /// Plane-strain modulus E* = E/(1 − ν²) used by the Hertz formulas (DESIGN §9).
   double planeStrainModulus() const
@@ -101,24 +113,6 @@ struct DiscretizationSettings {
   int degree = 1;  ///< k of RT_k × DP_k × CP_k (DESIGN §2)
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static DiscretizationSettings fromParameters(const Teuchos::ParameterList& list);
-};
-
-struct EstimatorSettings {
-  int reconstructionDegreeIncrease = 1;  ///< u^R in P_{k+increase} (DESIGN §4)
-  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static EstimatorSettings fromParameters(const Teuchos::ParameterList& list);
-};
-
-enum class MarkingStrategy { Dorfler, Maximum, Uniform };
-
-struct AdaptivitySettings {
-  int cycles = 0;
-  MarkingStrategy marking = MarkingStrategy::Dorfler;
-  double bulkParameter = 0.5;
-  long long maxDofs = 2000000;
-  double targetEta = 0.0;
-  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static AdaptivitySettings fromParameters(const Teuchos::ParameterList& list);
 };
 
 }  // namespace sc::core

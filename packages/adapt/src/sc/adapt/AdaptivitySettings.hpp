@@ -1,0 +1,26 @@
+#pragma once
+// The "Adaptivity" sublist (docs/parameters.txt): cycles, marking and the stop criteria of the
+// solve → estimate → mark → refine loop (docs/theory.md §"Adaptivity").
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+namespace sc::adapt {
+
+struct AdaptivitySettings {
+  int cycles = 0;                ///< refinement cycles after the first solve
+  std::string marking = "Dorfler";  ///< a name known to createMarker (Marker.hpp)
+  double bulkParameter = 0.5;    ///< θ ∈ (0, 1] of Dörfler / maximum marking
+  long long maxDofs = 0;         ///< no refinement once a solved cycle has this many DOFs
+  double targetError = 0.0;      ///< stop when η ≤ targetError · ‖A^{1/2}σ_h‖ (0: never)
+
+  /// Marking needs element indicators (every strategy but Uniform).
+  bool needsIndicators() const { return marking != "Uniform"; }
+
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  /// Reads a validated "Adaptivity" list (no second default).
+  static AdaptivitySettings fromParameters(const Teuchos::ParameterList& adaptivityList);
+};
+
+}  // namespace sc::adapt

@@ -1,0 +1,165 @@
+#include "sc/estimator/ErrorEstimator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <sc/assembly/ElementSolution.hpp>
+#include <sc/core/Error.hpp>
+#include <sc/disc/ElementValues.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+
+namespace sc::estimator {
+
+double ErrorEstimate::total() const
+{
+  double s = 0.0;
+  for (const auto& p : parts)
+    s += p.second;
+  return std::sqrt(s);
+}
+
+double ErrorEstimate::squared(const std::string& name) const
+{
+  for (const auto& p : parts)
+    if (p.first == name)
+      return p.second;
+  throw core::InternalError("the estimate has no part '" + name + "'");
+}
+
+ErrorEstimator::ErrorEstimator(const assembly::MixedElasticityAssembler& assembler,
+                               const EstimatorSettings& settings,
+                               Teuchos::RCP<const Teuchos::Comm<int>> comm)
+  : assembler_(assembler), comm_(std::move(comm))
+{
+  const auto& S = assembler.space();
+  reconstruction_ = std::make_unique<DisplacementReconstruction>(
+      S, settings.reconstructionDegree(S.degree()), comm_);
+}
+
+ErrorEstimator::~ErrorEstimator() = default;
+
+void ErrorEstimator::addContribution(std::shared_ptr<const EstimatorContribution> contribution)
+{
+  contributions_.push_back(std::move(contribution));
+}
+
+ErrorEstimate ErrorEstimator::estimate(const assembly::MultiVector& solution,
+                                       const assembly::ElasticityData& data)
+{
+  SC_THROW_IF(data.boundaryConditions.hasContact() && contributions_.empty(), core::InputError,
+              "the error estimator has no contact terms yet (η_CF, issue #9): a scene with a "
+              "boundary of Type Contact cannot be estimated.");
+  const auto& S = assembler_.space();
+  const auto& m = S.mesh();
+  const int d = S.dim();
+  const double twoMu = 2.0 * data.material.shearModulus(), cd = data.material.complianceCoefficient(d);
+  const core::ExactSolution* exact = data.exactSolution;
+
+  assembly::ElementSolution sol(assembler_, solution);
+  reconstruction_->reconstruct(sol, data);
+  const auto& rec = *reconstruction_;
+
+  disc::ElementValues ev(S, rec.cubatureDegree());
+  disc::FaceValues fv(S, rec.cubatureDegree());
+  std::vector<double> uR, gradUR;
+  assembly::PointValues v;
+  const auto& terms = assembly::asymmetryTerms(d);
+  ErrorEstimate est;
+  est.indicators.assign(S.ownedElements().size(), 0.0);
+  // Local sums: volume, asymmetry, oscillation, ‖A^{1/2}σ_h‖².
+  double local[4] = {0, 0, 0, 0}, global[4];
+  for (std::size_t idx = 0; idx < S.ownedElements().size(); ++idx) {
+    const int e = S.ownedElements()[idx];
+    ev.reinit(e);
+    sol.gather(e);
+    rec.valuesAt(e, ev, uR, gradUR);
+    const double hT = m.elementDiameter(e);
+    double vol = 0.0, asym = 0.0, osc = 0.0, norm = 0.0;
+    for (int q = 0; q < ev.numPoints(); ++q) {
+      sol.evaluate(ev, q, v);
+      const double w = ev.weight(q);
+      double trace = 0.0;
+      for (int i = 0; i < d; ++i)
+        trace += v.sigma[i * d + i];
+      norm += w * data.material.complianceEnergyDensity(v.sigma, d);
+      for (int i = 0; i < d; ++i)
+        for (int j = 0; j < d; ++j) {
+          const double Asigma = (v.sigma[i * d + j] - (i == j ? cd * trace : 0.0)) / twoMu;
+          const double eps = 0.5 * (gradUR[(q * d + i) * d + j] + gradUR[(q * d + j) * d + i]);
+          vol += w * twoMu * (Asigma - eps) * (Asigma - eps);
+        }
+      double as[3] = {0, 0, 0};
+      for (const auto& t : terms)
+        as[t.comp] += t.sign * v.sigma[t.row * d + t.col];
+      for (int r = 0; r < S.numRotationComponents(); ++r)
+        asym += w * as[r] * as[r] / twoMu;
+      if (exact) {
+        // div σ_h = −Π_k f, so f + div σ_h = f − Π_k f.
+        double f[3];
+        exact->bodyForce(ev.point(q), f);
+        for (int i = 0; i < d; ++i)
+          osc += w * std::pow(hT / M_PI, 2) * std::pow(f[i] + v.divSigma[i], 2) / twoMu;
+      }
+    }
+    const int* faces = m.elementFaces(e);
+    for (int lf = 0; lf <= d; ++lf) {
+      const int f = faces[lf];
+      if (!m.isBoundaryFace(f))
+        continue;
+      const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
+      if (!bc || bc->type == core::BoundaryType::Contact)
+        continue;  // free faces: σ_h n = 0 exactly; contact faces: the contact contribution
+      const bool constantZero = !bc->fromExactSolution &&
+                                std::all_of(bc->value.begin(), bc->value.end(), [](double x) { return x == 0.0; });
+      if (bc->type == core::BoundaryType::Traction && constantZero)
+        continue;
+      const double hF = d == 2 ? m.faceMeasure(f) : std::sqrt(m.faceMeasure(f));
+      fv.reinit(e, lf);
+      for (int q = 0; q < fv.numPoints(); ++q) {
+        const double* x = fv.point(q);
+        double value[3] = {0, 0, 0};
+        if (bc->type == core::BoundaryType::Displacement) {
+          if (bc->fromExactSolution)
+            exact->displacement(x, value);
+          else
+            std::copy(bc->value.begin(), bc->value.end(), value);
+          double u[3];
+          rec.valueAt(e, x, u);
+          for (int i = 0; i < d; ++i)
+            osc += fv.weight(q) * twoMu / hF * std::pow(value[i] - u[i], 2);
+        } else {
+          if (bc->fromExactSolution)
+            exact->traction(x, fv.normal().data(), value);
+          else
+            std::copy(bc->value.begin(), bc->value.end(), value);
+          double sigma[9];
+          sol.stress(fv, q, sigma);
+          for (int i = 0; i < d; ++i) {
+            double sn = 0.0;
+            for (int j = 0; j < d; ++j)
+              sn += sigma[i * d + j] * fv.normal()[j];
+            osc += fv.weight(q) * hF * std::pow(value[i] - sn, 2) / twoMu;
+          }
+        }
+      }
+    }
+    est.indicators[idx] = vol + asym + osc;
+    local[0] += vol;
+    local[1] += asym;
+    local[2] += osc;
+    local[3] += norm;
+  }
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 4, local, global);
+  est.addPart("volume", global[0]);
+  est.addPart("asymmetry", global[1]);
+  est.addPart("oscillation", global[2]);
+  est.stressEnergyNorm = std::sqrt(std::max(global[3], 0.0));
+  for (const auto& c : contributions_)
+    c->addTo(est, sol, rec, *comm_);
+  return est;
+}
+
+}  // namespace sc::estimator
