@@ -19,11 +19,13 @@
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
+#include <sc/contact/Hertz.hpp>
 #include <sc/contact/Obstacle.hpp>
 #include <sc/io/CsvWriter.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/estimator/ContactContribution.hpp>
 #include <sc/estimator/DisplacementReconstruction.hpp>
 #include <sc/estimator/ErrorEstimator.hpp>
 #include <sc/solvers/DirectSolver.hpp>
@@ -62,16 +64,6 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   marker_ = adapt::createMarker(adaptivity_);
   stop_ = std::make_unique<adapt::StopCriteria>(adaptivity_);
 
-  // The estimator has no contact terms yet (η_CF, issue #9): a contact scene gets no indicators.
-  SC_THROW_IF(boundaryConditions_.hasContact() && adaptivity_.cycles > 0 &&
-                  adaptivity_.needsIndicators(),
-              core::InputError,
-              "'Adaptivity/Marking' = '" << adaptivity_.marking << "' with 'Adaptivity/Cycles' = "
-                  << adaptivity_.cycles
-                  << " needs error indicators, and the estimator has no contact terms yet "
-                  << "(η_CF, issue #9), so a scene with a Contact boundary cannot be marked. "
-                  << "Valid for contact scenes now: 'Uniform', or Cycles = 0.");
-
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
   // is ill-posed here). Say so now rather than let the solver fail (issue #12, item 3).
@@ -98,9 +90,6 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   // Built here so that a bad Linear Solver list fails before any work.
   solver_ = solvers::createDirectSolver(params_->sublist("Linear Solver"));
 
-  // What this build cannot compute yet, stated rather than faked.
-  if (boundaryConditions_.hasContact())
-    phasesMissing_.push_back("error estimator with contact terms (eta_CF, issue #9)");
 }
 
 Simulation::~Simulation() = default;
@@ -299,11 +288,14 @@ void Simulation::estimate()
 {
   estimate_.reset();
   stressEnergyError_ = -1.0;
-  if (contactSolver_ || !solved_)
-    return;  // no contact terms yet (phases_missing)
+  if (!solved_)
+    return;
   {
     auto t = timers_.scope("estimate");
     estimator_ = std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);
+    if (boundaryConditions_.hasContact())
+      estimator_->addContribution(std::make_shared<estimator::ContactContribution>(
+          *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact)));
     estimate_ = std::make_unique<estimator::ErrorEstimate>(
         estimator_->estimate(*solution_, {material_, boundaryConditions_, exact_.get()}));
   }
@@ -365,6 +357,20 @@ void Simulation::recordCycle(int cycle)
                     {"newton_iterations", st.newtonIterations},
                     {"cycle_remedies", st.remedies},
                     {"fixed_point_iterations", st.fixedPointIterations}};
+    // Hertz's values from the computed load for the Hertz scenes without friction (Johnson
+    // 1985; contact/Hertz.hpp): the ratios say how close the run is.
+    const auto& meshList = params_->sublist("Mesh");
+    const std::string source = meshList.get<std::string>("Source");
+    if ((source == "Half disc" || source == "Half ball") && !contact_.needsFriction() &&
+        force[d - 1] > 0.0) {
+      const auto h = contact::hertzFromLoad(d, force[d - 1], material_.youngModulus,
+                                            material_.poissonRatio, meshList.get<double>("Radius"));
+      c["contact"]["hertz"] = {{d == 2 ? "half_width" : "radius", h.halfWidth},
+                               {"max_pressure", h.maxPressure},
+                               {d == 2 ? "half_width_ratio" : "radius_ratio",
+                                (d == 2 ? cs.zoneSize : cs.equivalentZoneSize) / h.halfWidth},
+                               {"max_pressure_ratio", cs.maxPressure / h.maxPressure}};
+    }
     c["nonlinear_iterations"] = st.newtonIterations;
     std::ostringstream os;
     os << "force (" << force[0] << ", " << force[1] << (d == 3 ? ", " + std::to_string(force[2]) : "")
@@ -378,6 +384,8 @@ void Simulation::recordCycle(int cycle)
     eta["total"] = estimate_->total();
     for (const auto& p : estimate_->parts)
       eta[p.first] = std::sqrt(p.second);
+    for (const auto& p : estimate_->diagnostics)
+      eta[p.first] = p.second;  // signed, in the units of η² (not a root)
     eta["stress_energy_norm"] = estimate_->stressEnergyNorm;
     eta["relative"] = estimate_->total() / estimate_->stressEnergyNorm;
     if (stressEnergyError_ >= 0.0) {

@@ -66,8 +66,8 @@ inline constexpr double kLargeDisplacementFraction = 0.05;
 class Simulation {
 public:
   /// Reads the validated parameter list; throws InputError for combinations that this build
-  /// cannot run (e.g. Dorfler marking of a contact scene: no contact terms in the estimator yet),
-  /// before any work.
+  /// cannot run (e.g. contact at an unsupported degree, no Displacement boundary), before any
+  /// work.
   Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
              Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath, bool quiet);
   ~Simulation();

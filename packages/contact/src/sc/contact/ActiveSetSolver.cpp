@@ -18,6 +18,7 @@
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/DirectSolver.hpp>
 
+#include "sc/contact/ContactSummary.hpp"
 #include "sc/contact/Obstacle.hpp"
 
 namespace sc::contact {
@@ -335,21 +336,91 @@ long long ActiveSetSolver::globalNumPoints() const
 
 void ActiveSetSolver::setInitialState(const std::vector<ContactPoint>& previous)
 {
-  if (previous.empty())
-    return;
+  // The previous cycle's points of every rank (the partition changes between cycles): each new
+  // point takes the state of the nearest previous point, found through a uniform bucket grid, so
+  // that the start (and the Newton count) does not depend on the rank count.
   const int d = space_.dim();
+  std::vector<double> mine;
+  for (const auto& q : previous) {
+    for (int i = 0; i < d; ++i)
+      mine.push_back(q.x[i]);
+    mine.push_back(static_cast<double>(q.status));
+    mine.push_back(q.direction[0]);
+    mine.push_back(q.direction[1]);
+  }
+  const auto all = gatherAllVariable(mine, *comm_);
+  const int stride = d + 3;
+  const std::size_t n = all.size() / stride;
+  if (n == 0)
+    return;
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (std::size_t k = 0; k < n; ++k)
+    for (int i = 0; i < d; ++i) {
+      lo[i] = std::min(lo[i], all[k * stride + i]);
+      hi[i] = std::max(hi[i], all[k * stride + i]);
+    }
+  // About one previous point per cell.
+  const int cellsPerAxis = std::max(1, static_cast<int>(std::pow(static_cast<double>(n), 1.0 / d)));
+  double size[3] = {1, 1, 1};
+  for (int i = 0; i < d; ++i)
+    size[i] = std::max((hi[i] - lo[i]) / cellsPerAxis, 1e-300);
+  auto cellOf = [&](const double* x, int i) {
+    return std::min(cellsPerAxis - 1, std::max(0, static_cast<int>((x[i] - lo[i]) / size[i])));
+  };
+  std::vector<std::vector<std::size_t>> cells(static_cast<std::size_t>(std::pow(cellsPerAxis, d)));
+  auto index = [&](const int* c) {
+    std::size_t id = 0;
+    for (int i = d - 1; i >= 0; --i)
+      id = id * cellsPerAxis + c[i];
+    return id;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    int c[3] = {0, 0, 0};
+    for (int i = 0; i < d; ++i)
+      c[i] = cellOf(&all[k * stride], i);
+    cells[index(c)].push_back(k);
+  }
   for (auto& p : points_) {
+    int c[3] = {0, 0, 0};
+    for (int i = 0; i < d; ++i)
+      c[i] = cellOf(p.x.data(), i);
     double best = 1e300;
-    for (const auto& q : previous) {
-      double dist = 0.0;
+    std::size_t bestK = 0;
+    // Rings of cells around p's cell until a point is found and the ring is farther than it.
+    for (int ring = 0; ring <= cellsPerAxis; ++ring) {
+      double ringDist = 1e300;  // lower bound of the distance to cells in this ring
       for (int i = 0; i < d; ++i)
-        dist += (p.x[i] - q.x[i]) * (p.x[i] - q.x[i]);
-      if (dist < best) {
-        best = dist;
-        p.status = q.status;
-        p.direction = q.direction;
+        ringDist = std::min(ringDist, (ring - 1) * size[i]);
+      if (best < 1e299 && ring > 0 && std::max(0.0, ringDist) * std::max(0.0, ringDist) > best)
+        break;
+      int o[3] = {0, 0, 0};
+      const int span = 2 * ring + 1;
+      const int count = d == 2 ? span * span : span * span * span;
+      for (int t = 0; t < count; ++t) {
+        int rem = t, cc[3] = {0, 0, 0};
+        bool onRing = false, inside = true;
+        for (int i = 0; i < d; ++i) {
+          o[i] = rem % span - ring;
+          rem /= span;
+          onRing = onRing || std::abs(o[i]) == ring;
+          cc[i] = c[i] + o[i];
+          inside = inside && cc[i] >= 0 && cc[i] < cellsPerAxis;
+        }
+        if (!onRing || !inside)
+          continue;
+        for (std::size_t k : cells[index(cc)]) {
+          double dist = 0.0;
+          for (int i = 0; i < d; ++i)
+            dist += (p.x[i] - all[k * stride + i]) * (p.x[i] - all[k * stride + i]);
+          if (dist < best || (dist == best && k < bestK)) {
+            best = dist;
+            bestK = k;
+          }
+        }
       }
     }
+    p.status = static_cast<PointStatus>(static_cast<int>(all[bestK * stride + d]));
+    p.direction = {all[bestK * stride + d + 1], all[bestK * stride + d + 2]};
   }
 }
 

@@ -102,7 +102,9 @@ public:
                   const Teuchos::ParameterList& newtonList, Teuchos::RCP<const Teuchos::Comm<int>> comm);
   ~ActiveSetSolver();
 
-  /// Start from the states of points of a previous cycle (nearest point), else all free.
+  /// Start from the states of the points of a previous cycle (`previous`: this rank's; the
+  /// nearest previous point of any rank gives each new point its state), else all free.
+  /// Collective.
   void setInitialState(const std::vector<ContactPoint>& previous);
 
   /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact

@@ -50,8 +50,8 @@ ErrorEstimate ErrorEstimator::estimate(const assembly::MultiVector& solution,
                                        const assembly::ElasticityData& data)
 {
   SC_THROW_IF(data.boundaryConditions.hasContact() && contributions_.empty(), core::InputError,
-              "the error estimator has no contact terms yet (η_CF, issue #9): a scene with a "
-              "boundary of Type Contact cannot be estimated.");
+              "a scene with a boundary of Type Contact needs the contact terms of η_CF: add an "
+              "estimator::ContactContribution before estimate().");
   const auto& S = assembler_.space();
   const auto& m = S.mesh();
   const int d = S.dim();
