@@ -74,7 +74,7 @@ TEUCHOS_UNIT_TEST(RunSummary, CycleEntryHasEverySchemaKey)
     keys.push_back(it.key());
   TEST_COMPARE_ARRAYS(keys, (std::vector<std::string>{"cycle", "elements", "dofs", "mesh", "eta",
                                                       "errors", "contact", "nonlinear_iterations",
-                                                      "linear_iterations", "timings"}));
+                                                      "linear_solves", "linear_iterations", "timings"}));
   TEST_EQUALITY(c["cycle"].get<int>(), 3);
   for (const char* k : {"stress", "displacement", "rotation", "total"})
     TEST_ASSERT(c["dofs"].contains(k) && c["dofs"][k].is_null());

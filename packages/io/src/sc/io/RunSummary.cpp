@@ -40,6 +40,7 @@ Json RunSummary::makeCycleEntry(int cycle)
   c["errors"] = Json::object();
   c["contact"] = Json::object();
   c["nonlinear_iterations"] = nullptr;
+  c["linear_solves"] = nullptr;
   c["linear_iterations"] = nullptr;
   c["timings"] = Json::object();
   return c;
