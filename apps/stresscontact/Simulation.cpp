@@ -343,7 +343,8 @@ void Simulation::recordCycle(int cycle)
   c["elements"] = mesh_->numElements();
   if (solved_ && contactSolver_) {
     const int d = problem_.dimension;
-    const auto cs = contact::summarizeContact(contactSolver_->points(), d, contact_.obstacleNormal, *comm_);
+    const auto cs = contact::summarizeContact(contactSolver_->points(), d, contact_.obstacleNormal,
+                                              *comm_, 1e-12 * 2.0 * material_.shearModulus());
     const auto& st = contactSolver_->statistics();
     std::vector<double> force(cs.force.begin(), cs.force.begin() + d);
     c["contact"] = {{"force", force},

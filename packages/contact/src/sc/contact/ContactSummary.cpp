@@ -58,9 +58,14 @@ std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teu
 
 ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
                                 const std::vector<double>& obstacleNormal,
-                                const Teuchos::Comm<int>& comm)
+                                const Teuchos::Comm<int>& comm, double pressureFloor)
 {
   ContactSummary out;
+  // A point carrying no more pressure than the floor counts as free here (a zero load must not
+  // report a contact zone of round-off pressures).
+  auto status = [pressureFloor](const ContactPoint& p) {
+    return p.status != PointStatus::Free && -p.sigmaN <= pressureFloor ? PointStatus::Free : p.status;
+  };
   // Local contributions: force, pressure, counts, centroid of active points, zone areas.
   double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // force(3), active count, centroid(3), areas(2)
   double localMax = 0.0;
@@ -71,8 +76,8 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
       local[i] += ti * p.weight;
     }
     localMax = std::max(localMax, -p.sigmaNAtDofPoint);  // the trace at the DOF points
-    ++counts[static_cast<int>(p.status)];
-    if (p.status != PointStatus::Free) {
+    ++counts[static_cast<int>(status(p))];
+    if (status(p) != PointStatus::Free) {
       local[3] += 1.0;
       for (int i = 0; i < dim; ++i)
         local[4 + i] += p.x[i];
@@ -83,7 +88,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
         cosine += p.n[i] * obstacleNormal[i];
       const double share = std::abs(p.weight * cosine);
       local[7] += share;
-      if (p.status == PointStatus::Stick)
+      if (status(p) == PointStatus::Stick)
         local[8] += share;
     }
   }
@@ -122,7 +127,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
       s = std::sqrt(r2);
     }
     mine.push_back(s);
-    mine.push_back(static_cast<double>(static_cast<int>(p.status)));
+    mine.push_back(static_cast<double>(static_cast<int>(status(p))));
   }
   const std::vector<double> all = gatherAllVariable(mine, comm);
   const int total = static_cast<int>(all.size());

@@ -30,8 +30,10 @@ struct ContactSummary {
 /// Every rank's `mine` concatenated in rank order, on every rank (a variable-size all-gather).
 std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm);
 
+/// `pressureFloor`: points with −σ_N ≤ pressureFloor count as free (the application passes
+/// 1e-12 × 2μ, a strain of 1e-12: a zero load then reports no zone).
 ContactSummary summarizeContact(const std::vector<ContactPoint>& localPoints, int dim,
                                 const std::vector<double>& obstacleNormal,
-                                const Teuchos::Comm<int>& comm);
+                                const Teuchos::Comm<int>& comm, double pressureFloor = 0.0);
 
 }  // namespace sc::contact
