@@ -4,7 +4,7 @@
 Runs build/apps/stresscontact/stresscontact on input/hertz2d*.xml, writes one CSV per run under
 docs/adaptivity/ (cycle, DOFs, eta and its parts, the signed normal part, load P, half-width a,
 peak pressure p0, Hertz a and p0 from P, Newton steps, seconds) and, with Debian's
-python3-matplotlib, the PNG plots of docs/adaptivity.md.
+python3-matplotlib (and python3-h5py for the deformed mesh), the PNG plots of docs/adaptivity.md.
 
 Usage (repository root, after building):  /usr/bin/python3 docs/adaptivity/hertz2d_study.py
 Runs take about 3 minutes on one core.
@@ -183,6 +183,41 @@ def plots(outs):
     plt.close(fig)
 
 
+def deformed_mesh_plot(outs):
+    """The mesh after 5 adaptive cycles, warped by u^R (the talk's deformed mesh), from the
+    cycle's HDF5 file (Debian's python3-h5py)."""
+    try:
+        import h5py
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import matplotlib.tri as mtri
+    except ImportError:
+        print("python3-h5py or python3-matplotlib missing: no deformed-mesh plot")
+        return
+    path = os.path.join(outs["frictionless_nu028_adaptive"], "solution_c0005.h5")
+    with h5py.File(path, "r") as f:
+        xyz = f["domain/geometry"][()]
+        tri = f["domain/topology"][()]
+        u = f["domain/point/reconstructed_displacement"][()]
+    # True scale (u^R is about 1% of the radius): the right panel stretches y to show the flat
+    # contact zone on the plane y = 0; a magnified u^R would cross the plane.
+    t = mtri.Triangulation(xyz[:, 0] + u[:, 0], xyz[:, 1] + u[:, 1], tri)
+    fig, axs = plt.subplots(1, 2, figsize=(10, 4.2))
+    for ax, xlim, ylim, title in ((axs[0], (-1.05, 1.05), (-0.05, 1.05), "whole body"),
+                                  (axs[1], (-0.15, 0.15), (-0.003, 0.012), "contact zone, y stretched")):
+        ax.triplot(t, lw=0.3, color="C0")
+        ax.axhline(0.0, color="k", lw=0.8)
+        ax.set_xlim(*xlim)
+        ax.set_ylim(*ylim)
+        if ylim[1] > 1:
+            ax.set_aspect("equal")
+        ax.set_title("cycle 5, deformed by u^R: %s (%d elements)" % (title, len(tri)), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "deformed_mesh_cycle5.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     if not os.path.exists(APP):
         sys.exit("build the application first: " + APP)
@@ -193,6 +228,7 @@ def main():
         print("%-32s rate of eta over the last %d cycles: %.2f" % (name, min(10, len(rows) - 1),
                                                                    rate(rows, min(10, len(rows) - 1))))
     plots(outs)
+    deformed_mesh_plot(outs)
 
 
 if __name__ == "__main__":
