@@ -369,19 +369,28 @@ TEUCHOS_UNIT_TEST(Hertz, YoungModulusScalesStressOnly)
   TEST_FLOATING_EQUALITY(rb.summary.maxPressure, 1e6 * ra.summary.maxPressure, 1e-9);
 }
 
+namespace {
+// Unit square (mesh 0.125) on the plane y = 0, Top pushed down by 0.01, Coulomb μ_F = 0.4.
+HertzCase flatPunch()
+{
+  HertzCase h;
+  h.source = "Unit square";
+  h.contactName = "Bottom";
+  h.meshSize = 0.125;
+  h.localRefinements = 0;
+  h.law = sc::core::FrictionLaw::Coulomb;
+  h.mu = 0.4;
+  h.displacement = 0.01;
+  return h;
+}
+}  // namespace
+
 TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
 {
   // Unit square on the plane y = 0 (zero initial gap), Top pushed down: the whole bottom is in
   // contact at any load, so tractions and displacements scale with the load (Coulomb is
   // positively homogeneous), from 10⁻⁶ to 10 times the base load.
-  HertzCase base;
-  base.source = "Unit square";
-  base.contactName = "Bottom";
-  base.meshSize = 0.125;
-  base.localRefinements = 0;
-  base.law = sc::core::FrictionLaw::Coulomb;
-  base.mu = 0.4;
-  base.displacement = 0.01;
+  const HertzCase base = flatPunch();
   const auto r0 = solveHertz(base);
   TEST_ASSERT(r0.stats.converged);
   TEST_EQUALITY(r0.summary.numFree, 0);
@@ -402,14 +411,7 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
 // (the analytic equivalence of the linearised problem), σ to 1e-8 of the peak.
 TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
 {
-  HertzCase raised;
-  raised.source = "Unit square";
-  raised.contactName = "Bottom";
-  raised.meshSize = 0.125;
-  raised.localRefinements = 0;
-  raised.law = sc::core::FrictionLaw::Coulomb;
-  raised.mu = 0.4;
-  raised.displacement = 0.01;
+  HertzCase raised = flatPunch();
   raised.obstacleHeight = 0.002;
   HertzCase pushed = raised;
   pushed.obstacleHeight = 0.0;

@@ -198,17 +198,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
 
   const auto& m = space.mesh();
   const int d = m.dim();
-  // Gap cap for rays that miss the obstacle: 10 × the domain's bounding-box diagonal.
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (int v = 0; v < m.numVertices(); ++v)
-    for (int i = 0; i < d; ++i) {
-      lo[i] = std::min(lo[i], m.vertex(v)[i]);
-      hi[i] = std::max(hi[i], m.vertex(v)[i]);
-    }
-  double diag = 0.0;
-  for (int i = 0; i < d; ++i)
-    diag += (hi[i] - lo[i]) * (hi[i] - lo[i]);
-  const double cap = 10.0 * std::sqrt(diag);
+  const double cap = missCap(m);
   const double twoMu = 2.0 * material.shearModulus();
 
   std::vector<int> contactIds;

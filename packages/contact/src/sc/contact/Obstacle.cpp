@@ -1,6 +1,7 @@
 #include "sc/contact/Obstacle.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <sc/core/Error.hpp>
@@ -50,6 +51,21 @@ std::unique_ptr<Obstacle> createObstacle(const core::ContactSettings& settings, 
   SC_THROW_IF(settings.obstacle != "Plane", core::InputError,
               "'Contact/Obstacle' = '" << settings.obstacle << "': valid obstacles: 'Plane'.");
   return std::make_unique<PlaneObstacle>(dim, settings.obstaclePoint, settings.obstacleNormal);
+}
+
+double missCap(const mesh::SimplexMesh& m)
+{
+  const int d = m.dim();
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (int v = 0; v < m.numVertices(); ++v)
+    for (int i = 0; i < d; ++i) {
+      lo[i] = std::min(lo[i], m.vertex(v)[i]);
+      hi[i] = std::max(hi[i], m.vertex(v)[i]);
+    }
+  double diag = 0.0;
+  for (int i = 0; i < d; ++i)
+    diag += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  return 10.0 * std::sqrt(diag);
 }
 
 void checkObstacle(const mesh::SimplexMesh& m, const core::ContactSettings& settings,

@@ -46,6 +46,10 @@ private:
 
 std::unique_ptr<Obstacle> createObstacle(const core::ContactSettings& settings, int dim);
 
+/// The gap given to rays that miss the obstacle: 10 × the mesh's bounding-box diagonal (finite,
+/// since c·G is formed; large enough that such points stay free).
+double missCap(const mesh::SimplexMesh& mesh);
+
 /// Largest initial overlap accepted, as a fraction of the body's extent along the obstacle
 /// normal: beyond it the small-strain, linearised contact model does not apply.
 inline constexpr double kMaxInitialOverlap = 0.1;

@@ -34,17 +34,7 @@ void ContactContribution::addTo(ErrorEstimate& est, assembly::ElementSolution& s
   const bool obstacleFrame = settings_.frame == core::ContactFrame::ObstacleNormal;
   const bool coulomb = settings_.frictionLaw == core::FrictionLaw::Coulomb;
   const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca;
-  // Gap cap for rays that miss the obstacle (as the contact solver): 10 × the bounding box.
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (int v = 0; v < m.numVertices(); ++v)
-    for (int i = 0; i < d; ++i) {
-      lo[i] = std::min(lo[i], m.vertex(v)[i]);
-      hi[i] = std::max(hi[i], m.vertex(v)[i]);
-    }
-  double diag = 0.0;
-  for (int i = 0; i < d; ++i)
-    diag += (hi[i] - lo[i]) * (hi[i] - lo[i]);
-  const double cap = 10.0 * std::sqrt(diag);
+  const double cap = contact::missCap(m);  // as the contact solver
   std::vector<int> ids;
   for (const auto& name : boundaries_)
     ids.push_back(m.boundaryId(name));
