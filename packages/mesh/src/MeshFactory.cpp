@@ -231,7 +231,7 @@ void checkRefinementEstimate(const Teuchos::ParameterList& p, const SimplexMesh&
     SC_THROW_IF(true, sc::core::InputError,
                 "'Mesh/Local refinement/Levels' = " << levels << " is too many: "
                     << static_cast<long long>(est.selected) << " selected elements, growing about "
-                    << est.growth << " times per sweep, each with about " << est.closure
+                    << std::round(est.growth * 100.0) / 100.0 << " times per sweep, each with about " << est.closure
                     << " new elements with the closure, would give " << limit.describe(est.local)
                     << ". At most " << fit
                     << " sweeps fit; fewer sweeps or a smaller 'Mesh/Local refinement/Radius'.");
