@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -97,8 +98,28 @@ Simulation::~Simulation() = default;
 void Simulation::setupMesh()
 {
   auto t = timers_.scope("mesh");
+  // The memory limit: Mesh/Memory limit (GB), or rank 0's available memory, the same on every
+  // rank so that the estimates of MeshFactory and of the adaptive steps agree (issue #12, item 2).
+  double available = 0.0;
+  std::string source;
+  if (comm_->getRank() == 0)
+    available = mesh::availableMemoryBytes(&source);
+  Teuchos::broadcast<int, double>(*comm_, 0, &available);
+  {
+    std::vector<char> c(source.begin(), source.end());
+    int n = static_cast<int>(c.size());
+    Teuchos::broadcast<int, int>(*comm_, 0, &n);
+    c.resize(n);
+    if (n > 0)
+      Teuchos::broadcast<int, char>(*comm_, 0, n, c.data());
+    source.assign(c.begin(), c.end());
+  }
+  limit_ = mesh::makeResourceLimit(params_->sublist("Mesh").get<double>("Memory limit (GB)", 0.0),
+                                   problem_.dimension, discretization_.degree, comm_->getSize(),
+                                   adaptivity_.maxDofs, available, source);
   // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
-  refiner_ = mesh::MeshFactory::build(params_->sublist("Mesh"), problem_.dimension, *comm_);
+  refiner_ = mesh::MeshFactory::build(params_->sublist("Mesh"), problem_.dimension, *comm_,
+                                      /*splitBoundarySimplices=*/false, limit_);
   mesh_ = refiner_->mesh();
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
@@ -317,6 +338,23 @@ std::string Simulation::checkStop(int cycle)
   const double eta = estimate_ ? estimate_->total() : -1.0;
   const double norm = estimate_ ? estimate_->stressEnergyNorm : -1.0;
   return stop_->reason(cycle, solved_ ? space_->numGlobalDofs() : 0, eta, norm);
+}
+
+std::string Simulation::checkNextMesh() const
+{
+  if (!limit_.active() || space_.is_null() || mesh_->numElements() == 0)
+    return "";
+  const double n = mesh_->numElements();
+  const int d = problem_.dimension;
+  // Uniform: exactly 2^d per element; marked: each with its closure, at most a uniform level.
+  const double uniform = n * (d == 2 ? 4.0 : 8.0);
+  const double next = adaptivity_.needsIndicators()
+                          ? std::min(uniform, n + mesh::closureFactor(d, false) *
+                                                      static_cast<double>(marked_.size()))
+                          : uniform;
+  const double nextDofs = static_cast<double>(space_->numGlobalDofs()) * next / n;
+  const double bytes = nextDofs * mesh::bytesPerDof(d) + limit_.ranks * next * mesh::kMeshBytesPerElement;
+  return stop_->memoryReason(nextDofs, bytes, limit_.memoryBytes, limit_.memorySource);
 }
 
 void Simulation::mark()
@@ -594,6 +632,8 @@ void Simulation::run()
       marked_.clear();
       if (stopReason_.empty())
         mark();
+      if (stopReason_.empty())
+        stopReason_ = checkNextMesh();
       writeFields(cycle);
       recordCycle(cycle);
       summary_->currentCycle()["timings"] = timers_.cycleTimings();

@@ -23,6 +23,7 @@
 #include <sc/core/Timers.hpp>
 #include <sc/estimator/EstimatorSettings.hpp>
 #include <sc/io/OutputSettings.hpp>
+#include <sc/mesh/ResourceEstimate.hpp>
 
 namespace sc::mesh {
 class SimplexMesh;
@@ -91,6 +92,9 @@ private:
   void estimate();
   /// The reason to stop after this cycle ("" = go on), then the marking for the next one.
   std::string checkStop(int cycle);
+  /// After marking: "" or the reason to stop because the next mesh would exceed the memory
+  /// limit (estimated from the marked elements and the current DOFs per element).
+  std::string checkNextMesh() const;
   void mark();
   void writeFields(int cycle);
   void recordCycle(int cycle);
@@ -113,6 +117,7 @@ private:
   core::PhaseTimers timers_;
 
   Teuchos::RCP<mesh::BisectionRefiner> refiner_;  ///< owns the mesh hierarchy
+  mesh::ResourceLimit limit_;  ///< Mesh/Memory limit (GB) or the available memory (rank 0's)
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
   std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element
   std::vector<std::string> phasesMissing_;

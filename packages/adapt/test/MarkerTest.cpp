@@ -118,6 +118,21 @@ TEUCHOS_UNIT_TEST(StopCriteria, CyclesDofsTarget)
   TEST_THROW(sc::adapt::StopCriteria bad(s), sc::core::InputError);
 }
 
+// Issue #12, item 2: a step whose next mesh would exceed the memory limit stops the run.
+TEUCHOS_UNIT_TEST(StopCriteria, NextMeshAboveTheMemoryLimit)
+{
+  sc::adapt::AdaptivitySettings s;
+  s.cycles = 5;
+  s.maxDofs = 10000;
+  sc::adapt::StopCriteria stop(s);
+  TEST_EQUALITY(stop.memoryReason(5000, 0.9e9, 1e9, "test"), "");
+  TEST_EQUALITY(stop.memoryReason(5000, 1e9, 1e9, "test"), "");
+  const std::string r = stop.memoryReason(2.5e6, 5.5e9, 1e9, "MemAvailable in /proc/meminfo");
+  out << r << "\n";
+  TEST_ASSERT(r.find("memory: the next mesh would have about 2.5e+06 DOFs needing about 5.5 GB, "
+                     "above the memory limit of 1 GB (MemAvailable in /proc/meminfo)") == 0);
+}
+
 // E × 10⁶ on a displacement-driven scene (unit square: Left clamped, Right pulled by u_D, the
 // rest free; corner singularities make the indicators far from uniform).
 TEUCHOS_UNIT_TEST(Estimator, YoungModulusScalesEveryPartAndKeepsTheMarking)

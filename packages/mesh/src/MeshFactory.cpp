@@ -7,8 +7,12 @@
 #include <sc/mesh/GmshMeshIO.hpp>
 #include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
+#include <sc/mesh/ResourceEstimate.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
+
+#include <cmath>
+#include <sstream>
 
 namespace sc::mesh {
 
@@ -34,6 +38,13 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
                          "Uniform bisection levels applied to the initial mesh (x4 elements per "
                          "level in 2D, x8 in 3D)",
                          0, 20);
+    sc::core::declareReal(*p, "Memory limit (GB)", 0.0,
+                          "Memory the run may use, in GB (1e9 bytes), summed over ranks; 0 = the "
+                          "memory available when the run starts (MemAvailable in /proc/meminfo). "
+                          "Meshes and refinements whose estimated memory exceeds it are refused "
+                          "before they are made; an adaptive run stops before such a cycle "
+                          "(docs/mesh.md, 'Resource limits')",
+                          0.0, /*lowerOpen=*/false);
     sc::core::declareBool(*p, "Project boundary", true,
                           "Project new vertices on curved boundaries (Arc, Cap) onto the exact "
                           "circle/sphere; false keeps the initial polygonal boundary");
@@ -118,6 +129,154 @@ Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::Parameter
 
 namespace {
 
+// The local-refinement selection of one sweep (Levels > 0; validated Center).
+struct LocalSelection {
+  int d = 0, part = -1;
+  Teuchos::Array<double> center;
+  double radius = 0.25;
+  bool within(const SimplexMesh& m, const int* verts, int n) const
+  {
+    double r2 = 0.0;
+    for (int j = 0; j < d; ++j) {
+      double c = 0.0;
+      for (int i = 0; i < n; ++i) c += m.vertex(verts[i])[j] / n;
+      r2 += (c - center[j]) * (c - center[j]);
+    }
+    return r2 < radius * radius;
+  }
+  std::vector<int> marked(const SimplexMesh& m) const
+  {
+    std::vector<int> marked;
+    if (part < 0) {
+      for (int e = 0; e < m.numElements(); ++e)
+        if (within(m, m.elementVertices(e), d + 1)) marked.push_back(e);
+    } else {
+      for (int f : m.boundaryFaces())
+        if (m.faceBoundaryId(f) == part && within(m, m.faceVertices(f), d))
+          marked.push_back(m.faceElements(f)[0]);
+    }
+    return marked;
+  }
+};
+
+LocalSelection localSelection(const SimplexMesh& mesh, const Teuchos::ParameterList& list)
+{
+  Teuchos::ParameterList local(list);  // get() with defaults: missing keys mean the defaults
+  const int levels = local.get<int>("Levels", 0);
+  LocalSelection s;
+  s.d = mesh.dim();
+  s.center = local.get<Teuchos::Array<double>>("Center", Teuchos::Array<double>());
+  SC_THROW_IF(static_cast<int>(s.center.size()) != s.d, sc::core::InputError,
+              "'Mesh/Local refinement/Center' needs " << s.d << " values (the problem dimension) "
+              "when 'Mesh/Local refinement/Levels' = " << levels << " > 0; got "
+              << s.center.size() << ".");
+  s.radius = local.get<double>("Radius", 0.25);
+  const std::string boundary = local.get<std::string>("Boundary", "");
+  // boundaryId() throws an InputError listing the valid part names.
+  s.part = boundary.empty() ? -1 : mesh.boundaryId(boundary);
+  return s;
+}
+
+// Stage 1, before Gmsh runs: the initial mesh of a scene from its measure and the target size.
+void checkInitialEstimate(const Teuchos::ParameterList& p, int dimension, const ResourceLimit& limit)
+{
+  if (!limit.active()) return;
+  const double measure = sceneMeasure(p, dimension);
+  if (measure <= 0.0) return;  // Gmsh file: checked once read (its size is the file's)
+  const double h = p.get<double>("Initial mesh size");
+  const double n = estimateInitialElements(measure, h, dimension);
+  if (!(n > limit.maxElements())) return;
+  const double hMin = h * std::pow(n / limit.maxElements(), 1.0 / dimension);
+  SC_THROW_IF(true, sc::core::InputError,
+              "'Mesh/Initial mesh size' = " << h << " is too small: the initial mesh of the '"
+                  << p.get<std::string>("Source") << "' (" << (dimension == 2 ? "area " : "volume ")
+                  << measure << ") would have " << limit.describe(n)
+                  << ". Make 'Mesh/Initial mesh size' at least about " << hMin
+                  << " or raise 'Mesh/Memory limit (GB)' on a larger machine.");
+}
+
+// Stage 2, on the initial mesh (all ranks): uniform levels (×2^d each) and the local sweeps.
+void checkRefinementEstimate(const Teuchos::ParameterList& p, const SimplexMesh& initial,
+                             const ResourceLimit& limit)
+{
+  if (!limit.active()) return;
+  const int d = initial.dim();
+  const double n0 = initial.numElements();
+  const double maxN = limit.maxElements();
+  if (n0 > maxN)
+    SC_THROW_IF(true, sc::core::InputError,
+                "the initial mesh (" << initial.origin() << ") has " << limit.describe(n0)
+                    << ". Use a coarser mesh.");
+  const int uniform = p.get<int>("Uniform refinements");
+  const double nU = n0 * std::pow(2.0, d * uniform);
+  if (nU > maxN) {
+    const int fit = static_cast<int>(std::floor(std::log2(maxN / n0) / d));
+    SC_THROW_IF(true, sc::core::InputError,
+                "'Mesh/Uniform refinements' = " << uniform << " is too many: the initial mesh's "
+                    << initial.numElements() << " elements times " << (1 << d) << " per level would give "
+                    << limit.describe(nU) << ". At most " << std::max(fit, 0)
+                    << " uniform levels fit.");
+  }
+  const Teuchos::ParameterList& local = p.sublist("Local refinement");
+  const int levels = local.get<int>("Levels");
+  if (levels == 0) return;
+  const auto est = MeshFactory::estimateRefinement(p, initial);
+  if (est.local > maxN) {
+    Teuchos::ParameterList q(p);
+    int fit = 0;
+    for (; fit < levels; ++fit) {
+      q.sublist("Local refinement").set("Levels", fit + 1);
+      if (MeshFactory::estimateRefinement(q, initial).local > maxN) break;
+    }
+    SC_THROW_IF(true, sc::core::InputError,
+                "'Mesh/Local refinement/Levels' = " << levels << " is too many: "
+                    << static_cast<long long>(est.selected) << " selected elements, growing about "
+                    << std::round(est.growth * 100.0) / 100.0 << " times per sweep, each with about " << est.closure
+                    << " new elements with the closure, would give " << limit.describe(est.local)
+                    << ". At most " << fit
+                    << " sweeps fit; fewer sweeps or a smaller 'Mesh/Local refinement/Radius'.");
+  }
+}
+
+}  // namespace
+
+double MeshFactory::estimateInitialElements(const Teuchos::ParameterList& meshList, int dimension)
+{
+  const Teuchos::ParameterList p = validated(meshList);
+  const double measure = sceneMeasure(p, dimension);
+  if (measure <= 0.0) return -1.0;
+  return sc::mesh::estimateInitialElements(measure, p.get<double>("Initial mesh size"), dimension);
+}
+
+MeshEstimate MeshFactory::estimateRefinement(const Teuchos::ParameterList& meshList,
+                                             const SimplexMesh& initial)
+{
+  const Teuchos::ParameterList p = validated(meshList);
+  const int d = initial.dim();
+  MeshEstimate e;
+  e.initial = initial.numElements();
+  const int uniform = p.get<int>("Uniform refinements");
+  e.uniform = e.initial * std::pow(2.0, d * uniform);
+  e.local = e.uniform;
+  const Teuchos::ParameterList& local = p.sublist("Local refinement");
+  const int levels = local.get<int>("Levels");
+  if (levels == 0) return e;
+  const LocalSelection sel = localSelection(initial, local);
+  // Selected elements after the uniform levels: ×2^d (volume) or ×2^(d-1) (faces on a part).
+  const bool surface = sel.part >= 0;
+  e.selected = static_cast<double>(sel.marked(initial).size()) *
+               std::pow(2.0, (surface ? d - 1 : d) * uniform);
+  // A volume region keeps its measure while h halves every d sweeps: its elements double per
+  // sweep; along a surface they grow by 2^((d-1)/d). Each selected element brings `closure` new
+  // ones with the conforming closure (calibrated: docs/mesh.md "Resource limits").
+  e.growth = surface ? std::pow(2.0, (d - 1.0) / d) : 2.0;
+  e.closure = closureFactor(d, surface);
+  e.local = e.uniform + e.closure * e.selected * (std::pow(e.growth, levels) - 1.0) / (e.growth - 1.0);
+  return e;
+}
+
+namespace {
+
 Teuchos::RCP<SimplexMesh> initialMesh(const Teuchos::ParameterList& p, int dimension,
                                       const Teuchos::RCP<const Geometry>& geometry)
 {
@@ -151,12 +310,14 @@ void broadcastString(const Teuchos::Comm<int>& comm, std::string& s)
 
 Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
                                       Teuchos::RCP<const SimplexMesh> initial,
-                                      Teuchos::RCP<const Geometry> geometry, bool split)
+                                      Teuchos::RCP<const Geometry> geometry, bool split,
+                                      const ResourceLimit& limit)
 {
   if (split) initial = splitElementsWithAllVerticesOnBoundary(*initial);
+  checkRefinementEstimate(p, *initial, limit);
   auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
   for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
-  MeshFactory::refineLocally(*refiner, p.sublist("Local refinement"));
+  MeshFactory::refineLocally(*refiner, p.sublist("Local refinement"), limit);
   return refiner;
 }
 
@@ -164,11 +325,13 @@ Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
 
 Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
                                                   int dimension, const Teuchos::Comm<int>& comm,
-                                                  bool splitBoundarySimplices)
+                                                  bool splitBoundarySimplices,
+                                                  const ResourceLimit& limit)
 {
-  if (comm.getSize() == 1) return build(meshList, dimension, splitBoundarySimplices);
+  if (comm.getSize() == 1) return build(meshList, dimension, splitBoundarySimplices, limit);
   const Teuchos::ParameterList p = validated(meshList);  // same on every rank: throws everywhere
   auto geometry = buildGeometry(p, dimension);
+  checkInitialEstimate(p, dimension, limit);  // the same limit on every rank: throws everywhere
   std::vector<double> coords;
   std::vector<int> elems, bfv, bpart;
   std::string names, origin, error;
@@ -203,55 +366,40 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
     nameList.push_back(names.substr(a, b - a));
   auto mesh = Teuchos::rcp(new SimplexMesh(dimension, std::move(coords), std::move(elems), bfv,
                                            bpart, nameList, origin));
-  return finish(p, mesh, geometry, splitBoundarySimplices);
+  return finish(p, mesh, geometry, splitBoundarySimplices, limit);
 }
 
-void MeshFactory::refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& list)
+void MeshFactory::refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& list,
+                                const ResourceLimit& limit)
 {
   Teuchos::ParameterList local(list);  // get() with defaults: missing keys mean the defaults
   const int levels = local.get<int>("Levels", 0);
   if (levels == 0) return;
-  const int d = refiner.mesh()->dim();
-  const auto center = local.get<Teuchos::Array<double>>("Center", Teuchos::Array<double>());
-  SC_THROW_IF(static_cast<int>(center.size()) != d, sc::core::InputError,
-              "'Mesh/Local refinement/Center' needs " << d << " values (the problem dimension) "
-              "when 'Mesh/Local refinement/Levels' = " << levels << " > 0; got "
-              << center.size() << ".");
-  const double radius = local.get<double>("Radius", 0.25);
-  const std::string boundary = local.get<std::string>("Boundary", "");
-  // boundaryId() throws an InputError listing the valid part names.
-  const int part = boundary.empty() ? -1 : refiner.mesh()->boundaryId(boundary);
-  auto within = [&](const SimplexMesh& m, const int* verts, int n) {
-    double r2 = 0.0;
-    for (int j = 0; j < d; ++j) {
-      double c = 0.0;
-      for (int i = 0; i < n; ++i) c += m.vertex(verts[i])[j] / n;
-      r2 += (c - center[j]) * (c - center[j]);
-    }
-    return r2 < radius * radius;
-  };
+  const LocalSelection sel = localSelection(*refiner.mesh(), local);
   for (int level = 0; level < levels; ++level) {
     const auto m = refiner.mesh();
-    std::vector<int> marked;
-    if (part < 0) {
-      for (int e = 0; e < m->numElements(); ++e)
-        if (within(*m, m->elementVertices(e), d + 1)) marked.push_back(e);
-    } else {
-      for (int f : m->boundaryFaces())
-        if (m->faceBoundaryId(f) == part && within(*m, m->faceVertices(f), d))
-          marked.push_back(m->faceElements(f)[0]);
-    }
+    const std::vector<int> marked = sel.marked(*m);
     if (marked.empty()) break;  // the region holds no element (or face) centroid any more
+    // The estimate of build() is checked again with the real counts before each sweep.
+    const double next = m->numElements() + closureFactor(m->dim(), sel.part >= 0) *
+                                               static_cast<double>(marked.size());
+    SC_THROW_IF(limit.active() && next > limit.maxElements(), sc::core::InputError,
+                "'Mesh/Local refinement/Levels' = " << levels << " is too many: sweep "
+                    << level + 1 << " would bisect " << marked.size() << " of "
+                    << m->numElements() << " elements, giving " << limit.describe(next)
+                    << ". At most " << level << " sweeps fit.");
     refiner.refine(marked);
   }
 }
 
 Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
-                                                  int dimension, bool splitBoundarySimplices)
+                                                  int dimension, bool splitBoundarySimplices,
+                                                  const ResourceLimit& limit)
 {
   const Teuchos::ParameterList p = validated(meshList);
   auto geometry = buildGeometry(p, dimension);
-  return finish(p, initialMesh(p, dimension, geometry), geometry, splitBoundarySimplices);
+  checkInitialEstimate(p, dimension, limit);
+  return finish(p, initialMesh(p, dimension, geometry), geometry, splitBoundarySimplices, limit);
 }
 
 }  // namespace sc::mesh

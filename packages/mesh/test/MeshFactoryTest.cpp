@@ -28,12 +28,12 @@ TEUCHOS_UNIT_TEST(MeshFactory, ValidParametersHaveDefaultsAndDocs)
   auto valid = MeshFactory::getValidParameters();
   for (const std::string key : {"Source", "Initial mesh size", "Uniform refinements",
                                 "Project boundary", "Radius", "File", "Lower corner",
-                                "Upper corner"}) {
+                                "Upper corner", "Memory limit (GB)"}) {
     TEST_ASSERT(valid->isParameter(key));
     if (valid->isParameter(key)) TEST_ASSERT(!valid->getEntry(key).docString().empty());
   }
   TEST_ASSERT(valid->isSublist("Local refinement"));
-  TEST_EQUALITY(valid->numParams(), 9);
+  TEST_EQUALITY(valid->numParams(), 10);
   TEST_EQUALITY(valid->get<std::string>("Source"), std::string("Half disc"));
   TEST_EQUALITY(valid->get<bool>("Project boundary"), true);
 }

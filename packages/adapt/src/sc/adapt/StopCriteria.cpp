@@ -30,4 +30,16 @@ std::string StopCriteria::reason(int cycle, long long dofs, double eta, double s
   return os.str();
 }
 
+std::string StopCriteria::memoryReason(double nextDofs, double nextBytes, double limitBytes,
+                                      const std::string& limitSource) const
+{
+  if (!(nextBytes > limitBytes)) return "";
+  std::ostringstream os;
+  os.precision(3);
+  os << "memory: the next mesh would have about " << nextDofs << " DOFs needing about "
+     << nextBytes / 1e9 << " GB, above the memory limit of " << limitBytes / 1e9 << " GB ("
+     << limitSource << ")";
+  return os.str();
+}
+
 }  // namespace sc::adapt

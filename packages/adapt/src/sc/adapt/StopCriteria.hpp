@@ -14,6 +14,12 @@ public:
   /// The reason to stop after cycle `cycle` (0-based), or "" to refine and go on. `eta` and
   /// `stressNorm` (‖A^{1/2}σ_h‖) are ignored when negative (no estimate this cycle).
   std::string reason(int cycle, long long dofs, double eta, double stressNorm) const;
+  /// The reason to stop before a refinement whose next mesh is estimated at `nextDofs` DOFs
+  /// and `nextBytes` bytes, if that exceeds `limitBytes` (from `limitSource`, e.g.
+  /// "MemAvailable in /proc/meminfo"), or "" (issue #12, item 2: the run stops cleanly, with
+  /// its solved cycles written, instead of dying in std::bad_alloc).
+  std::string memoryReason(double nextDofs, double nextBytes, double limitBytes,
+                           const std::string& limitSource) const;
 
 private:
   AdaptivitySettings settings_;

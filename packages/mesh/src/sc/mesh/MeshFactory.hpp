@@ -5,6 +5,7 @@
 
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/Geometry.hpp>
+#include <sc/mesh/ResourceEstimate.hpp>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
@@ -30,21 +31,38 @@ public:
   /// domain, apply Mesh/Uniform refinements, and return the refiner holding the current mesh.
   /// splitBoundarySimplices: split initial elements with all vertices on the boundary at their
   /// barycentre first (BoundarySimplexSplit.hpp; for 3D Taylor–Hood stability, DESIGN §2).
+  /// `limit` (ResourceEstimate.hpp; default: none): the initial mesh of a scene, the uniform
+  /// levels and the local sweeps are estimated first, and one that exceeds the limit is an
+  /// InputError naming the key, the estimate and the limit (before Gmsh or the refiner runs).
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
-                                              int dimension, bool splitBoundarySimplices = false);
+                                              int dimension, bool splitBoundarySimplices = false,
+                                              const ResourceLimit& limit = ResourceLimit());
 
   /// The same for a run on `comm`: rank 0 builds the initial mesh (Gmsh) and broadcasts it, so
   /// every rank holds the identical replicated mesh (and then identical refinements). An
   /// InputError on rank 0 is rethrown on every rank with the same message.
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
                                               int dimension, const Teuchos::Comm<int>& comm,
-                                              bool splitBoundarySimplices = false);
+                                              bool splitBoundarySimplices = false,
+                                              const ResourceLimit& limit = ResourceLimit());
 
   /// Apply a validated "Mesh/Local refinement" sublist (Levels, Center, Radius, Boundary):
   /// `Levels` sweeps, each bisecting (with conforming closure) every element whose centroid —
   /// or, with `Boundary`, whose face on that part — lies within `Radius` of `Center`. The
   /// closure grades the mesh away from the region. build() calls it after the uniform levels.
-  static void refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& local);
+  /// With `limit`, a sweep whose result (current elements + closureFactor() · selected) would
+  /// exceed it is an InputError naming Levels.
+  static void refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& local,
+                            const ResourceLimit& limit = ResourceLimit());
+
+  /// Estimated elements of the initial Gmsh mesh of a scene (ResourceEstimate.hpp), -1 for a
+  /// Gmsh file. Validates `meshList`.
+  static double estimateInitialElements(const Teuchos::ParameterList& meshList, int dimension);
+
+  /// Estimated elements after the uniform levels and the local sweeps of `meshList`, starting
+  /// from `initial` (counts its selected elements; Center/Boundary must be valid).
+  static MeshEstimate estimateRefinement(const Teuchos::ParameterList& meshList,
+                                         const SimplexMesh& initial);
 
   /// The scene geometry of a validated list (null for "Gmsh file").
   static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,

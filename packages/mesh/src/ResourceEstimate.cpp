@@ -1,0 +1,126 @@
+#include <sc/mesh/ResourceEstimate.hpp>
+
+#include <sc/core/Error.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+namespace sc::mesh {
+
+double sceneMeasure(const Teuchos::ParameterList& p, int dimension)
+{
+  const std::string source = p.get<std::string>("Source");
+  const double R = p.get<double>("Radius");
+  if (source == "Half disc") return M_PI * R * R / 2.0;
+  if (source == "Half ball") return 2.0 * M_PI * R * R * R / 3.0;
+  if (source == "Unit square" || source == "Unit cube") return 1.0;
+  if (source == "Rectangle") {
+    const auto lo = p.get<Teuchos::Array<double>>("Lower corner");
+    const auto hi = p.get<Teuchos::Array<double>>("Upper corner");
+    double m = 1.0;
+    for (int i = 0; i < dimension && i < static_cast<int>(lo.size()); ++i) m *= std::abs(hi[i] - lo[i]);
+    return m;
+  }
+  return -1.0;  // Gmsh file: its element count is known once read
+}
+
+double estimateInitialElements(double measure, double h, int dimension)
+{
+  if (dimension == 2) return kGmshElementsFactor2D * measure / (std::sqrt(3.0) / 4.0 * h * h);
+  return kGmshElementsFactor3D * measure / (h * h * h / (6.0 * std::sqrt(2.0)));
+}
+
+double dofsPerElement(int d, int k)
+{
+  // Per element of a large mesh: vertices V, edges E, faces F (interior faces shared by 2).
+  const double V = d == 2 ? 0.5 : 1.0 / 5.5, E = d == 2 ? 1.5 : 1.2 + V, F = d == 2 ? 1.0 : 2.0;
+  double stressRow, disp, rot;
+  if (d == 2) {
+    stressRow = (k + 1) * E + k * (k + 1);                        // RT_k: k+1 per edge
+    disp = 2.0 * (k + 1) * (k + 2) / 2.0;                          // DP_k, 2 components
+    rot = V + (k - 1) * E + (k - 1) * (k - 2) / 2.0;               // CP_k, 1 component
+    return 2.0 * stressRow + disp + rot;
+  }
+  stressRow = (k + 1) * (k + 2) / 2.0 * F + k * (k + 1) * (k + 2) / 2.0;
+  disp = 3.0 * (k + 1) * (k + 2) * (k + 3) / 6.0;
+  rot = 3.0 * (V + (k - 1) * E + (k - 1) * (k - 2) / 2.0 * F + (k - 1) * (k - 2) * (k - 3) / 6.0);
+  return 3.0 * stressRow + disp + rot;
+}
+
+double closureFactor(int dimension, bool alongBoundary)
+{
+  if (dimension == 2) return 3.0;
+  return alongBoundary ? 8.0 : 16.0;
+}
+
+double bytesPerDof(int dimension) { return dimension == 2 ? kBytesPerDof2D : kBytesPerDof3D; }
+
+double availableMemoryBytes(std::string* source)
+{
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb;
+  std::string unit;
+  while (in >> key >> kb) {
+    std::getline(in, unit);
+    if (key == "MemAvailable:") {
+      if (source) *source = "MemAvailable in /proc/meminfo";
+      return kb * 1024.0;
+    }
+  }
+  const long pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && size > 0) {
+    if (source) *source = "available physical pages (sysconf)";
+    return static_cast<double>(pages) * static_cast<double>(size);
+  }
+  if (source) *source = "unknown";
+  return std::numeric_limits<double>::infinity();
+}
+
+namespace {
+std::string gb(double bytes)
+{
+  std::ostringstream os;
+  os.precision(3);
+  os << bytes / 1e9 << " GB";
+  return os.str();
+}
+}  // namespace
+
+std::string ResourceLimit::describe(double elements) const
+{
+  std::ostringstream os;
+  os.precision(2);
+  os << "about " << elements << (dimension == 2 ? " triangles, " : " tetrahedra, ") << dofs(elements)
+     << " DOFs (degree " << degree << ") and " << gb(bytes(elements)) << " of memory ("
+     << bytesPerDof(dimension) / 1e3 << " kB per DOF for the system and MUMPS factors, measured in "
+     << "docs/benchmarks.md), above the memory limit of " << gb(memoryBytes) << " (" << memorySource
+     << ")";
+  if (maxDofs > 0 && dofs(elements) > static_cast<double>(maxDofs))
+    os << "; 'Adaptivity/Max DOFs' is " << maxDofs;
+  return os.str();
+}
+
+ResourceLimit makeResourceLimit(double limitGB, int dimension, int degree, int ranks,
+                                long long maxDofs, double availableBytes,
+                                const std::string& availableSource)
+{
+  ResourceLimit l;
+  l.dimension = dimension;
+  l.degree = degree;
+  l.ranks = ranks;
+  l.maxDofs = maxDofs;
+  if (limitGB > 0.0) {
+    l.memoryBytes = limitGB * 1e9;
+    l.memorySource = "'Mesh/Memory limit (GB)'";
+  } else {
+    l.memoryBytes = availableBytes;
+    l.memorySource = availableSource + ", the default of 'Mesh/Memory limit (GB)'";
+  }
+  return l;
+}
+
+}  // namespace sc::mesh

@@ -1,0 +1,90 @@
+#pragma once
+// Estimates of the size of a run before its mesh is made or refined (issue #12, item 2;
+// docs/mesh.md "Resource limits"): elements of the initial Gmsh mesh from the scene's measure and
+// Mesh/Initial mesh size, growth under uniform and local refinement, DOFs per element from the
+// counts of the mixed space, and bytes per DOF from the measured memory of docs/benchmarks.md.
+// A mesh whose estimate exceeds the memory limit is an InputError naming the key, the estimate
+// and the limit, instead of a hang in Gmsh or a std::bad_alloc.
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <limits>
+#include <string>
+
+namespace sc::mesh {
+
+/// Calibration of the initial Gmsh mesh: elements ≈ kGmshElementsFactor[d] · measure / m(h),
+/// with m(h) the measure of the equilateral triangle (√3/4 h²) or regular tetrahedron
+/// (h³/(6√2)) of edge h. Fitted on the scenes' meshes (docs/mesh.md table, test
+/// MeshResources.InitialEstimateMatchesGmsh).
+inline constexpr double kGmshElementsFactor2D = 1.1;
+inline constexpr double kGmshElementsFactor3D = 0.75;
+
+/// Measured memory of a run per DOF (docs/benchmarks.md "Memory per DOF": assembled system plus
+/// MUMPS factors, 1 rank, k = 1; the increment between the two largest sizes): 2.2 kB/DOF in 2D,
+/// 7.4 kB/DOF in 3D.
+inline constexpr double kBytesPerDof2D = 2.2e3;
+inline constexpr double kBytesPerDof3D = 7.4e3;
+/// The replicated mesh, per element and per rank (docs/mesh.md: about 0.4 kB per tetrahedron).
+inline constexpr double kMeshBytesPerElement = 400.0;
+/// New elements per element selected by a bisection sweep (its bisection and the conforming
+/// closure around it), fitted on the scenes (test MeshResources.RefinementEstimateMatchesTheRefiner,
+/// docs/mesh.md "Resource limits"): 3 in 2D; in 3D 16 for a volume region and 8 along a boundary
+/// part (3D bisection needs 3 generations to halve h, and the closure cascades further).
+double closureFactor(int dimension, bool alongBoundary);
+
+/// Estimated elements of a mesh built by MeshFactory (MeshFactory::estimateRefinement).
+struct MeshEstimate {
+  double initial = 0.0;   ///< the initial mesh (counted)
+  double uniform = 0.0;   ///< after Mesh/Uniform refinements (×2^d per level)
+  double local = 0.0;     ///< after the local sweeps
+  double selected = 0.0;  ///< elements selected by the first local sweep (after uniform levels)
+  double growth = 1.0;    ///< growth of the selected elements per sweep
+  double closure = 0.0;   ///< new elements per selected element, with the closure
+};
+
+/// Measure (area/volume) of the domain of a validated Mesh list, or -1 for 'Gmsh file'.
+double sceneMeasure(const Teuchos::ParameterList& validatedMesh, int dimension);
+
+/// Elements of Gmsh's mesh of a domain of this measure at target size h.
+double estimateInitialElements(double measure, double h, int dimension);
+
+/// Global DOFs per element of the mixed space RT_k^d × DP_k^d × CP_k^r (r = 1 in 2D, 3 in 3D)
+/// on a large mesh (Euler: per triangle 1/2 vertex, 3/2 edges; per tetrahedron about 1/5.5
+/// vertex, 1.2 edges, 2 faces). k = 1: 16.5 (2D), 39.6 (3D).
+double dofsPerElement(int dimension, int degree);
+
+/// kBytesPerDof2D / 3D.
+double bytesPerDof(int dimension);
+
+/// The machine's available memory in bytes: MemAvailable of /proc/meminfo, else
+/// sysconf(_SC_AVPHYS_PAGES) · page size. `source` says which.
+double availableMemoryBytes(std::string* source = nullptr);
+
+/// The limit a run's mesh is checked against.
+struct ResourceLimit {
+  double memoryBytes = std::numeric_limits<double>::infinity();
+  std::string memorySource;   ///< e.g. "MemAvailable in /proc/meminfo"
+  int dimension = 2;
+  int degree = 1;
+  int ranks = 1;
+  long long maxDofs = 0;      ///< Adaptivity/Max DOFs (0: not given), named in messages
+  bool active() const { return memoryBytes < std::numeric_limits<double>::infinity(); }
+  double dofs(double elements) const { return elements * dofsPerElement(dimension, degree); }
+  /// Bytes of a run on a mesh of `elements` elements: DOFs · bytesPerDof + ranks · mesh.
+  double bytes(double elements) const
+  {
+    return dofs(elements) * bytesPerDof(dimension) + ranks * elements * kMeshBytesPerElement;
+  }
+  double maxElements() const { return memoryBytes / (bytes(1.0)); }
+  /// "about 3.6e+12 elements, 6e+13 DOFs and 1.3e+08 GB, above the memory limit of 21.3 GB
+  /// (MemAvailable in /proc/meminfo)" (and Max DOFs when the DOFs exceed it).
+  std::string describe(double elements) const;
+};
+
+/// Limit from Mesh/Memory limit (GB) (0: the available memory).
+ResourceLimit makeResourceLimit(double limitGB, int dimension, int degree, int ranks,
+                                long long maxDofs, double availableBytes,
+                                const std::string& availableSource);
+
+}  // namespace sc::mesh

@@ -1,0 +1,207 @@
+// Estimates of mesh size, DOFs and memory before meshing and refining (issue #12, item 2),
+// calibrated on the real meshes: each test prints measured against estimated (docs/mesh.md,
+// "Resource limits", has the table), and refusals name the key, the estimate and the limit.
+#include "MeshTestUtils.hpp"
+
+#include <sc/core/Error.hpp>
+#include <sc/mesh/MeshFactory.hpp>
+#include <sc/mesh/ResourceEstimate.hpp>
+
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <chrono>
+#include <iomanip>
+
+namespace {
+
+using namespace sc::mesh;
+using sc::mesh::test::contains;
+
+std::string errorOf(const std::function<void()>& f)
+{
+  try {
+    f();
+  } catch (const sc::core::InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+Teuchos::ParameterList scene(const std::string& source, double h)
+{
+  Teuchos::ParameterList p;
+  p.set("Source", source);
+  p.set("Initial mesh size", h);
+  return p;
+}
+
+bool withinFactor2(double measured, double estimated)
+{
+  return estimated >= 0.5 * measured && estimated <= 2.0 * measured;
+}
+
+TEUCHOS_UNIT_TEST(MeshResources, InitialEstimateMatchesGmsh)
+{
+  struct Case { std::string source; int dim; double h; };
+  const std::vector<Case> cases = {
+      {"Half disc", 2, 0.25}, {"Half disc", 2, 0.1},   {"Half disc", 2, 0.05},
+      {"Half disc", 2, 0.02}, {"Unit square", 2, 0.25}, {"Unit square", 2, 0.1},
+      {"Unit square", 2, 0.05}, {"Rectangle", 2, 0.1},  {"Half ball", 3, 0.5},
+      {"Half ball", 3, 0.25}, {"Half ball", 3, 0.15},   {"Half ball", 3, 0.1},
+      {"Unit cube", 3, 0.5},  {"Unit cube", 3, 0.25},   {"Unit cube", 3, 0.15},
+      {"Unit cube", 3, 0.1}};
+  out << std::setw(12) << "scene" << std::setw(7) << "h" << std::setw(10) << "measured"
+      << std::setw(11) << "estimated" << std::setw(7) << "ratio\n";
+  for (const auto& c : cases) {
+    Teuchos::ParameterList p = scene(c.source, c.h);
+    if (c.source == "Rectangle") p.set("Upper corner", Teuchos::Array<double>(std::vector<double>{2.0, 0.5}));
+    const double estimated = MeshFactory::estimateInitialElements(p, c.dim);
+    const double measured = MeshFactory::build(p, c.dim)->mesh()->numElements();
+    out << std::setw(12) << c.source << std::setw(7) << c.h << std::setw(10) << measured
+        << std::setw(11) << std::lround(estimated) << std::setw(7) << std::setprecision(3)
+        << estimated / measured << "\n";
+    TEST_ASSERT(withinFactor2(measured, estimated));
+  }
+  Teuchos::ParameterList g;
+  g.set("Source", "Gmsh file");
+  TEST_EQUALITY(MeshFactory::estimateInitialElements(g, 2), -1.0);
+}
+
+TEUCHOS_UNIT_TEST(MeshResources, RefinementEstimateMatchesTheRefiner)
+{
+  struct Case { std::string source; int dim; double h; int uniform; int levels;
+                std::vector<double> center; double radius; std::string boundary; };
+  const std::vector<Case> cases = {
+      {"Half disc", 2, 0.25, 3, 0, {}, 0.25, ""},
+      {"Half ball", 3, 0.5, 1, 0, {}, 0.25, ""},
+      // the Hertz 2D test's local sweeps at (0, 0), and more
+      {"Half disc", 2, 0.1, 0, 2, {0, 0}, 0.25, ""},
+      {"Half disc", 2, 0.1, 0, 6, {0, 0}, 0.25, ""},
+      {"Half disc", 2, 0.1, 0, 10, {0, 0}, 0.25, ""},
+      {"Half disc", 2, 0.1, 1, 4, {0, 0}, 0.25, ""},
+      {"Half disc", 2, 0.1, 0, 6, {0, 0}, 0.25, "Arc"},
+      {"Half disc", 2, 0.1, 0, 12, {0, 0}, 0.25, "Arc"},
+      // input/hertz3d.xml (9 sweeps along the Cap), and more
+      {"Half ball", 3, 0.25, 0, 3, {0, 0, 0}, 0.22, "Cap"},
+      {"Half ball", 3, 0.25, 0, 9, {0, 0, 0}, 0.22, "Cap"},
+      {"Half ball", 3, 0.25, 0, 12, {0, 0, 0}, 0.22, "Cap"},
+      {"Half ball", 3, 0.25, 0, 3, {0, 0, 0}, 0.22, ""},
+      {"Half ball", 3, 0.25, 0, 6, {0, 0, 0}, 0.22, ""}};
+  out << std::setw(10) << "scene" << std::setw(6) << "h" << std::setw(4) << "U" << std::setw(4)
+      << "L" << std::setw(10) << "boundary" << std::setw(10) << "measured" << std::setw(11)
+      << "estimated" << std::setw(7) << "ratio\n";
+  for (const auto& c : cases) {
+    Teuchos::ParameterList p = scene(c.source, c.h);
+    p.set("Uniform refinements", c.uniform);
+    auto& local = p.sublist("Local refinement");
+    local.set("Levels", c.levels);
+    local.set("Center", Teuchos::Array<double>(c.center));
+    local.set("Radius", c.radius);
+    local.set("Boundary", c.boundary);
+    const auto refiner = MeshFactory::build(p, c.dim);
+    const double measured = refiner->mesh()->numElements();
+    const auto initial = MeshFactory::build(scene(c.source, c.h), c.dim)->mesh();
+    const auto e = MeshFactory::estimateRefinement(p, *initial);
+    out << std::setw(10) << c.source << std::setw(6) << c.h << std::setw(4) << c.uniform
+        << std::setw(4) << c.levels << std::setw(10) << c.boundary << std::setw(10) << measured
+        << std::setw(11) << std::lround(e.local) << std::setw(7) << std::setprecision(3)
+        << e.local / measured << "\n";
+    TEST_ASSERT(withinFactor2(measured, e.local));
+    if (c.levels == 0) TEST_EQUALITY(e.local, measured);  // uniform: exactly ×2^d per level
+  }
+}
+
+TEUCHOS_UNIT_TEST(MeshResources, DofsPerElementMatchTheMeasuredSpaces)
+{
+  // docs/benchmarks.md, k = 1 on uniformly refined unit square / cube: 744705 DOFs on 45056
+  // triangles, 478383 DOFs on 11776 tetrahedra (16.53 and 40.6 per element).
+  TEST_FLOATING_EQUALITY(dofsPerElement(2, 1), 744705.0 / 45056.0, 0.02);
+  TEST_FLOATING_EQUALITY(dofsPerElement(3, 1), 478383.0 / 11776.0, 0.05);
+  // k grows the count like the local spaces: more per element, 2D below 3D.
+  for (int k = 1; k < 4; ++k) {
+    TEST_ASSERT(dofsPerElement(2, k + 1) > dofsPerElement(2, k));
+    TEST_ASSERT(dofsPerElement(3, k + 1) > dofsPerElement(3, k));
+  }
+  TEST_EQUALITY(bytesPerDof(2), 2.2e3);
+  TEST_EQUALITY(bytesPerDof(3), 7.4e3);
+}
+
+TEUCHOS_UNIT_TEST(MeshResources, AvailableMemoryAndTheLimitKey)
+{
+  std::string source;
+  const double bytes = availableMemoryBytes(&source);
+  out << "available: " << bytes / 1e9 << " GB (" << source << ")\n";
+  TEST_ASSERT(bytes > 1e6 && bytes < 1e16);
+  TEST_ASSERT(!source.empty());
+  const auto deflt = makeResourceLimit(0.0, 2, 1, 1, 0, bytes, source);
+  TEST_EQUALITY(deflt.memoryBytes, bytes);
+  TEST_ASSERT(contains(deflt.memorySource, source));
+  const auto set = makeResourceLimit(2.5, 3, 1, 2, 1000, bytes, source);
+  TEST_EQUALITY(set.memoryBytes, 2.5e9);
+  TEST_ASSERT(contains(set.memorySource, "Mesh/Memory limit (GB)"));
+  TEST_FLOATING_EQUALITY(set.bytes(1000.0),
+                         1000.0 * (dofsPerElement(3, 1) * 7.4e3 + 2 * kMeshBytesPerElement), 1e-12);
+  TEST_ASSERT(contains(set.describe(1e6), "'Adaptivity/Max DOFs' is 1000"));
+}
+
+// The defects of issue #12, item 2: these hung in Gmsh or died in std::bad_alloc.
+TEUCHOS_UNIT_TEST(MeshResources, TooLargeMeshesAreRefusedBeforeTheyAreMade)
+{
+  const auto limit = makeResourceLimit(1.0, 2, 1, 1, 2000000, 0.0, "");
+  const auto start = std::chrono::steady_clock::now();
+  {
+    const std::string msg = errorOf([&] { MeshFactory::build(scene("Half disc", 1e-6), 2, false, limit); });
+    out << msg << "\n";
+    TEST_ASSERT(contains(msg, "'Mesh/Initial mesh size' = 1e-06 is too small"));
+    TEST_ASSERT(contains(msg, "triangles") && contains(msg, "DOFs") && contains(msg, "GB"));
+    TEST_ASSERT(contains(msg, "memory limit of 1 GB"));
+    TEST_ASSERT(contains(msg, "'Adaptivity/Max DOFs' is 2000000"));
+  }
+  {
+    const auto l3 = makeResourceLimit(1.0, 3, 1, 1, 0, 0.0, "");
+    const std::string msg = errorOf([&] { MeshFactory::build(scene("Half ball", 1e-3), 3, false, l3); });
+    TEST_ASSERT(contains(msg, "'Mesh/Initial mesh size' = 0.001 is too small") && contains(msg, "tetrahedra"));
+  }
+  {
+    Teuchos::ParameterList p = scene("Half disc", 0.25);
+    p.set("Uniform refinements", 20);
+    const std::string msg = errorOf([&] { MeshFactory::build(p, 2, false, limit); });
+    out << msg << "\n";
+    TEST_ASSERT(contains(msg, "'Mesh/Uniform refinements' = 20 is too many"));
+    TEST_ASSERT(contains(msg, "uniform levels fit"));
+  }
+  {
+    Teuchos::ParameterList p = scene("Half disc", 0.1);
+    p.sublist("Local refinement").set("Levels", 40);
+    p.sublist("Local refinement").set("Center", Teuchos::Array<double>(std::vector<double>{0.0, 0.0}));
+    const std::string msg = errorOf([&] { MeshFactory::build(p, 2, false, limit); });
+    out << msg << "\n";
+    TEST_ASSERT(contains(msg, "'Mesh/Local refinement/Levels' = 40 is too many"));
+    TEST_ASSERT(contains(msg, "sweeps fit"));
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  TEST_ASSERT(seconds < 10.0);
+  // Within the limit nothing changes.
+  Teuchos::ParameterList ok = scene("Half disc", 0.1);
+  ok.set("Uniform refinements", 1);
+  TEST_EQUALITY(MeshFactory::build(ok, 2, false, limit)->mesh()->numElements(), 4 * 390);
+}
+
+TEUCHOS_UNIT_TEST(MeshResources, LocalSweepsAreCheckedWithTheRealCounts)
+{
+  // refineLocally() checks each sweep again: a limit of about 2000 triangles stops the sweeps
+  // at (0, 0) of the half disc at h = 0.1 (390 triangles) before they pass it.
+  auto refiner = MeshFactory::build(scene("Half disc", 0.1), 2);
+  auto limit = makeResourceLimit(1.0, 2, 1, 1, 0, 0.0, "");
+  limit.memoryBytes = limit.bytes(2000.0);
+  Teuchos::ParameterList local;
+  local.set("Levels", 20);
+  local.set("Center", Teuchos::Array<double>(std::vector<double>{0.0, 0.0}));
+  const std::string msg = errorOf([&] { MeshFactory::refineLocally(*refiner, local, limit); });
+  out << msg << "\n";
+  TEST_ASSERT(contains(msg, "'Mesh/Local refinement/Levels' = 20 is too many: sweep"));
+  TEST_ASSERT(refiner->mesh()->numElements() <= 2000);
+}
+
+}  // namespace
