@@ -1,16 +1,18 @@
 #pragma once
 // Frictional contact on the stress DOFs (DESIGN §3): semismooth Newton / primal–dual active set.
 //
-// Contact points are the lattice points of the RT face DOFs on Γ_C faces. At a point p with
-// unscaled traction t = s_p (c_0, .., c_{d−1}) (c_i: the coefficient of row i's DOF, s_p from
-// disc::stressFaceDofPoints) and weighted displacement trace r = R/s_p (R: residual of the first
-// block row without contact term), in the face frame (n, t_1[, t_2]):
+// The constraints act on m coefficients per contact face (docs/contact.md "Constraint
+// points"): in 2D the traction at the RT face DOF points (s_p × the DOF coefficients, s_p from
+// disc::stressFaceDofPoints), in 3D the Bernstein coefficients τ = V⁻¹(s ∘ x) of the face's
+// traction. The dual quantities are the weighted displacement traces r = Vᵀ(R/s) (R: residual of
+// the first block row without contact term), the weighted gaps G = ∫_F g w_p. All are written in
+// the contact frame (n, t_1[, t_2]) of Contact/Frame (obstacle normal −ν or face normal):
 //   A (contact):  σ_N − c(r_N − G) < 0 → normal row kept with r_N = G (G on the right-hand side)
 //   I (free):     σ_N = 0, σ_T = 0 (rows replaced)
 //   on A, with s = μ_F max(0, −(σ_N − c(r_N − G))) (Hüeber–Stadler–Wohlmuth):
 //     stick if |σ_T − c r_T| ≤ s → tangential rows kept with r_T = 0;
 //     slip → σ_T = −μ_F σ_N ξ, ξ = (σ_T − c r_T)/|σ_T − c r_T|: exact Newton row in 2D; in 3D the
-//            direction is frozen at the previous iterate (a fixed point in ξ).
+//            Hüeber–Stadler–Wohlmuth linearisation (or the frozen direction, by choice).
 //     frictionless: σ_T = 0.  Tresca: s given.
 // The state (sets, directions) is iterated until it does not change; a state seen before is a
 // cycle: points whose direction flipped move to the stick set (a bounded number of times), then
