@@ -114,7 +114,7 @@ void Simulation::setupMesh()
       Teuchos::broadcast<int, char>(*comm_, 0, n, c.data());
     source.assign(c.begin(), c.end());
   }
-  limit_ = mesh::makeResourceLimit(params_->sublist("Mesh").get<double>("Memory limit (GB)", 0.0),
+  limit_ = mesh::makeResourceLimit(params_->sublist("Mesh").get<double>("Memory limit (GB)"),
                                    problem_.dimension, discretization_.degree, comm_->getSize(),
                                    adaptivity_.maxDofs, available, source);
   // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
