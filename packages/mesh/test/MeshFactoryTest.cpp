@@ -12,16 +12,7 @@ namespace {
 
 using namespace sc::mesh;
 using sc::mesh::test::contains;
-
-std::string errorOf(const std::function<void()>& f)
-{
-  try {
-    f();
-  } catch (const sc::core::InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using sc::mesh::test::errorOf;
 
 TEUCHOS_UNIT_TEST(MeshFactory, ValidParametersHaveDefaultsAndDocs)
 {

@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the mesh tests.
+#include <sc/core/Error.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include <algorithm>
@@ -10,6 +11,17 @@
 #include <vector>
 
 namespace sc::mesh::test {
+
+/// The message of the InputError that f throws, or "(no InputError)".
+inline std::string errorOf(const std::function<void()>& f)
+{
+  try {
+    f();
+  } catch (const sc::core::InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
 
 inline bool contains(const std::string& text, const std::string& what)
 {
