@@ -6,6 +6,8 @@
 #include <iostream>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_SerialDenseMatrix.hpp>
+#include <Teuchos_SerialDenseSolver.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -111,37 +113,21 @@ double bernstein(const std::array<int, 3>& alpha, const std::array<double, 3>& l
   return f;
 }
 
-// Inverse of a small dense matrix (row-major), Gauss–Jordan with partial pivoting.
-std::vector<double> invert(std::vector<double> a, int n)
+// Inverse of the small Bernstein collocation matrix (row-major), by LAPACK through Teuchos.
+std::vector<double> invert(const std::vector<double>& a, int n)
 {
-  std::vector<double> inv(static_cast<std::size_t>(n) * n, 0.0);
-  for (int i = 0; i < n; ++i)
-    inv[i * n + i] = 1.0;
-  for (int c = 0; c < n; ++c) {
-    int piv = c;
-    for (int r = c + 1; r < n; ++r)
-      if (std::abs(a[r * n + c]) > std::abs(a[piv * n + c]))
-        piv = r;
-    SC_THROW_IF(std::abs(a[piv * n + c]) < 1e-14, core::InternalError,
-                "singular Bernstein collocation matrix on a contact face");
-    for (int j = 0; j < n; ++j) {
-      std::swap(a[c * n + j], a[piv * n + j]);
-      std::swap(inv[c * n + j], inv[piv * n + j]);
-    }
-    const double d = a[c * n + c];
-    for (int j = 0; j < n; ++j) {
-      a[c * n + j] /= d;
-      inv[c * n + j] /= d;
-    }
-    for (int r = 0; r < n; ++r)
-      if (r != c) {
-        const double f = a[r * n + c];
-        for (int j = 0; j < n; ++j) {
-          a[r * n + j] -= f * a[c * n + j];
-          inv[r * n + j] -= f * inv[c * n + j];
-        }
-      }
-  }
+  Teuchos::SerialDenseMatrix<int, double> A(n, n);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      A(r, c) = a[r * n + c];
+  Teuchos::SerialDenseSolver<int, double> solver;
+  solver.setMatrix(Teuchos::rcpFromRef(A));
+  SC_THROW_IF(solver.invert() != 0, core::InternalError,
+              "singular Bernstein collocation matrix on a contact face");
+  std::vector<double> inv(static_cast<std::size_t>(n) * n);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      inv[r * n + c] = A(r, c);
   return inv;
 }
 
