@@ -29,7 +29,7 @@
 #include <sc/estimator/ContactContribution.hpp>
 #include <sc/estimator/DisplacementReconstruction.hpp>
 #include <sc/estimator/ErrorEstimator.hpp>
-#include <sc/solvers/DirectSolver.hpp>
+#include <sc/solvers/LinearSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <sc/io/OutputDirectory.hpp>
 #include <sc/io/RunSummary.hpp>
@@ -89,7 +89,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                     << "'Problem/Exact solution' (valid: 'Manufactured smooth', 'Linear patch'), "
                     << "but it is 'None'.");
   // Built here so that a bad Linear Solver list fails before any work.
-  solver_ = solvers::createDirectSolver(params_->sublist("Linear Solver"));
+  solver_ = solvers::createLinearSolver(params_->sublist("Linear Solver"));
 
 }
 
@@ -214,28 +214,41 @@ void Simulation::setupElasticity()
   progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
 }
 
+void Simulation::prepareSolver()
+{
+  // The solver owns the physical block scaling D (√(2μ) on σ, 1/√(2μ) on u, θ: robust in E) and
+  // gets the field layout and masses its block preconditioner needs (Krylov only).
+  const double twoMu = 2.0 * material_.shearModulus();
+  solver_->setScaling(assembler_->physicalScaling(twoMu)->getVector(0));
+  if (solver_->isIterative()) {
+    solvers::BlockStructure blocks;
+    blocks.stressDofs = space_->numStressDofs();
+    blocks.displacementDofs = space_->numDisplacementDofs();
+    blocks.rotationDofs = space_->numRotationDofs();
+    blocks.twoMu = twoMu;
+    blocks.fieldMass = assembler_->fieldMassMatrix();
+    solver_->setBlockStructure(blocks);
+  }
+  linearIterations_.clear();
+}
+
 void Simulation::solveElasticity()
 {
   setupElasticity();
   {
     auto t = timers_.scope("solve");
+    prepareSolver();
     // Without contact rows the system is symmetric (tractions are eliminated symmetrically).
-    solver_->setSymmetric(true);
-    // Solve D M D y = D b, x = D y with the physical block scaling (robust in E).
-    auto D = assembler_->physicalScaling(2.0 * material_.shearModulus())->getVector(0);
-    auto M = Teuchos::rcp(new Tpetra::CrsMatrix<>(*assembler_->matrix(), Teuchos::Copy));
-    M->leftScale(*D);
-    M->rightScale(*D);
-    auto b = assembler_->createVector();
-    b->elementWiseMultiply(1.0, *D, *assembler_->rhs(), 0.0);
-    auto y = assembler_->createVector();
-    solver_->setOperator(M);
-    solver_->solve(*b, *y);
+    solver_->setOperator(assembler_->matrix(), true);
     solution_ = assembler_->createVector();
-    solution_->elementWiseMultiply(1.0, *D, *y, 0.0);
+    solver_->solve(*assembler_->rhs(), *solution_);
+    if (solver_->isIterative())
+      linearIterations_.push_back(solver_->lastSolveStats().iterations);
   }
   std::ostringstream os;
   os << solver_->name() << ", relative residual " << solver_->lastSolveStats().relativeResidual;
+  if (solver_->isIterative())
+    os << ", " << solver_->lastSolveStats().iterations << " iterations";
   progress_.report("solve", os.str());
   solved_ = true;
 }
@@ -251,8 +264,10 @@ void Simulation::solveContact(int cycle)
     contactSolver_->setInitialState(previousPoints_);
     contactSolver_->setStepCallback([this](int step, long long changes, double seconds) {
       std::ostringstream os;
-      os << "Newton step " << step << ": " << changes << " points changed state ("
-         << std::fixed << std::setprecision(1) << seconds << " s)";
+      os << "Newton step " << step << ": " << changes << " points changed state";
+      if (solver_->isIterative())
+        os << ", " << solver_->lastSolveStats().iterations << " Krylov iterations";
+      os << " (" << std::fixed << std::setprecision(1) << seconds << " s)";
       progress_.report("contact", os.str());
     });
   }
@@ -261,8 +276,9 @@ void Simulation::solveContact(int cycle)
   solution_ = assembler_->createVector();
   {
     auto t = timers_.scope("solve");
-    auto D = assembler_->physicalScaling(2.0 * material_.shearModulus());
-    contactSolver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_, D.get());
+    prepareSolver();
+    contactSolver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
+    linearIterations_ = contactSolver_->statistics().linearIterationsPerStep;
   }
   const auto& st = contactSolver_->statistics();
   std::ostringstream os;
@@ -442,9 +458,16 @@ void Simulation::recordCycle(int cycle)
                  {"rotation", space_->numRotationDofs()},
                  {"total", space_->numGlobalDofs()}};
     const auto& st = solver_->lastSolveStats();
-    // One direct solve per Newton step (1 without contact); Krylov iterations come with #10.
+    // One linear solve per Newton step (1 without contact); Krylov iterations per solve.
     c["linear_solves"] = contactSolver_ ? contactSolver_->statistics().newtonIterations : 1;
-    c["linear_iterations"] = nullptr;
+    if (solver_->isIterative()) {
+      long long total = 0;
+      for (int it : linearIterations_)
+        total += it;
+      c["linear_iterations"] = {{"per_solve", linearIterations_}, {"total", total}};
+    } else {
+      c["linear_iterations"] = nullptr;
+    }
     c["linear_solver"] = {{"type", solver_->name()},
                           {"relative_residual", st.relativeResidual},
                           {"symbolic_reuses", st.symbolicReuses},

@@ -40,7 +40,7 @@ namespace sc::assembly {
 class MixedElasticityAssembler;
 }
 namespace sc::solvers {
-class DirectSolver;
+class LinearSolver;
 }
 namespace sc::core {
 class ExactSolution;
@@ -87,6 +87,8 @@ private:
   void refineMesh();
   void partitionMesh();
   void setupElasticity();
+  /// Hand the solver the scaling and (Krylov) the block structure of the assembled system.
+  void prepareSolver();
   void solveElasticity();
   void solveContact(int cycle);
   void estimate();
@@ -128,7 +130,8 @@ private:
   std::unique_ptr<core::ExactSolution> exact_;
   Teuchos::RCP<disc::MixedElasticitySpace> space_;
   std::unique_ptr<assembly::MixedElasticityAssembler> assembler_;
-  Teuchos::RCP<solvers::DirectSolver> solver_;
+  Teuchos::RCP<solvers::LinearSolver> solver_;
+  std::vector<int> linearIterations_;  // Krylov iterations per solve of the current cycle
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;
   bool solved_ = false;
 

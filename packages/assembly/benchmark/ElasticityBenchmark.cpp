@@ -144,9 +144,8 @@ int main(int argc, char* argv[])
       Teuchos::ParameterList sl;
       sl.set("Type", type);
       auto solver = sc::solvers::createDirectSolver(sl);
-      solver->setSymmetric(true);
       auto x = assembler.createVector();
-      solver->setOperator(assembler.matrix());
+      solver->setOperator(assembler.matrix(), true);
       comm->barrier();
       solver->solve(*assembler.rhs(), *x);
       const auto& st = solver->lastSolveStats();

@@ -18,7 +18,7 @@
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
-#include <sc/solvers/DirectSolver.hpp>
+#include <sc/solvers/LinearSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 
 namespace sc::test {
@@ -27,6 +27,8 @@ struct LevelResult {
   double h = 0.0;
   long long dofs = 0;
   assembly::ErrorNorms errors;
+  int iterations = -1;  ///< Krylov iterations (Iterative solver), -1 for direct solvers
+  double relativeResidual = 0.0;
 };
 
 struct VerificationSetup {
@@ -40,7 +42,9 @@ struct VerificationSetup {
   double E = 1.0;
   std::string exact = "Manufactured smooth";
   double wavenumber = M_PI;  ///< ω of the manufactured solution
-  std::string solver = "KLU2";
+  std::string solver = "KLU2";  ///< Linear Solver/Type: KLU2, MUMPS, Iterative
+  /// Extra entries of the "Linear Solver" list (e.g. the Iterative sublist).
+  Teuchos::ParameterList solverOptions;
   /// false: level l is the previous level refined uniformly (bisection); true: level l is a new
   /// Gmsh mesh of size meshSize / 2^l (same element quality on every level).
   bool remesh = false;
@@ -83,10 +87,9 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   auto refiner = mesh::MeshFactory::build(meshList, s.dim);
   core::Material material{s.E, s.nu};
   auto exact = core::createExactSolution(s.exact, s.dim, material, s.wavenumber);
-  Teuchos::ParameterList solverList;
+  Teuchos::ParameterList solverList(s.solverOptions);
   solverList.set("Type", s.solver);
-  auto solver = solvers::createDirectSolver(solverList);
-  solver->setSymmetric(true);
+  auto solver = solvers::createLinearSolver(solverList);
   std::vector<LevelResult> results;
   for (int level = 0; level < s.levels; ++level) {
     if (level > 0 && s.remesh) {
@@ -105,11 +108,23 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
       data.boundaryConditions.conditions = s.boundaryConditions;
     assembler.assemble(data);
     auto x = assembler.createVector();
-    solver->setOperator(assembler.matrix());
-    solver->symbolicFactorization();
-    solver->numericFactorization();
+    // As the application does (Simulation::prepareSolver): physical scaling, and the block
+    // structure for Krylov solvers.
+    solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+    if (solver->isIterative()) {
+      solvers::BlockStructure blocks;
+      blocks.stressDofs = space->numStressDofs();
+      blocks.displacementDofs = space->numDisplacementDofs();
+      blocks.rotationDofs = space->numRotationDofs();
+      blocks.twoMu = 2.0 * material.shearModulus();
+      blocks.fieldMass = assembler.fieldMassMatrix();
+      solver->setBlockStructure(blocks);
+    }
+    solver->setOperator(assembler.matrix(), true);
     solver->solve(*assembler.rhs(), *x);
     LevelResult r;
+    r.iterations = solver->lastSolveStats().iterations;
+    r.relativeResidual = solver->lastSolveStats().relativeResidual;
     // Effective mesh size (|Ω|/#elements)^{1/d}: uniform bisection shrinks it by exactly 2 per
     // level, unlike the largest diameter (3D bisection leaves long edges for a while).
     r.h = std::pow(m->measure() / m->numElements(), 1.0 / s.dim);

@@ -98,10 +98,10 @@ HertzResult solveHertz(const HertzCase& h)
   sc::contact::ActiveSetSolver contact(*space, cs, material, {contactName}, newton, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", h.solver);
-  auto solver = sc::solvers::createDirectSolver(solverList);
+  auto solver = sc::solvers::createLinearSolver(solverList);
   auto x = assembler.createVector();
-  auto D = assembler.physicalScaling(2.0 * material.shearModulus());
-  contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x, D.get());
+  solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+  contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
   HertzResult r;
   r.summary = sc::contact::summarizeContact(contact.points(), d, cs.obstacleNormal, *comm);
   r.points = contact.points();

@@ -154,15 +154,16 @@ int main(int argc, char* argv[])
         if (type == "KLU2" && p->dofs(n) > maxKluDofs) continue;
         Teuchos::ParameterList pl;
         pl.set("Type", type);
-        pl.set("Symmetric", type == "MUMPS" && p->symmetric() && !general);
+        pl.set("Symmetric", type == "MUMPS");
         pl.set("Equilibrate", equilibrate);
         if (type == "MUMPS" && !ordering.empty()) pl.sublist("MUMPS").set("Ordering", ordering);
         try {
           auto solver = createDirectSolver(pl);
-          solver->setOperator(A);
+          const bool symmetric = p->symmetric() && !general;
+          solver->setOperator(A, symmetric);
           solver->solve(b, x);
           const SolveStatistics first = solver->lastSolveStats();
-          solver->setOperator(A2);
+          solver->setOperator(A2, symmetric);
           solver->numericFactorization();
           const SolveStatistics& second = solver->lastSolveStats();
           const double total = first.symbolicSeconds + first.numericSeconds + first.solveSeconds;

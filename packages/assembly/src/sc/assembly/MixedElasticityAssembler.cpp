@@ -68,6 +68,7 @@ struct MixedElasticityAssembler::Impl {
   Teuchos::RCP<FEMatrix> matrix;
   Teuchos::RCP<FEVector> rhs;
   Teuchos::RCP<const Tpetra::Import<>> importer;  // owned -> overlap
+  Teuchos::RCP<FEMatrix> fieldMass;               // cached by fieldMassMatrix()
 };
 
 MixedElasticityAssembler::MixedElasticityAssembler(
@@ -331,8 +332,52 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
   }
   A.endAssembly();
   b.endAssembly();
+  impl_->fieldMass = Teuchos::null;
   stats_.constrainedDofs = nConstrained;
   stats_.assemblySeconds = Teuchos::Time::wallTime() - t0;
+}
+
+Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::fieldMassMatrix() const
+{
+  if (!impl_->fieldMass.is_null())
+    return impl_->fieldMass;
+  const auto& S = *space_;
+  const int d = S.dim(), k = S.degree(), L = S.localSize();
+  const int nDP = S.displacementBasisSize(), nCP = S.rotationBasisSize();
+  const int r = S.numRotationComponents();
+  disc::ElementValues ev(S, 2 * k + 2);
+  auto M = Teuchos::rcp(new FEMatrix(impl_->graph));
+  std::vector<double> K(static_cast<std::size_t>(L) * L);
+  std::vector<GO> gids(L);
+  M->beginAssembly();
+  M->setAllToScalar(0.0);
+  for (int e : S.ownedElements()) {
+    std::fill(K.begin(), K.end(), 0.0);
+    ev.reinit(e);
+    for (int q = 0; q < ev.numPoints(); ++q) {
+      const double w = ev.weight(q);
+      for (int a = 0; a < nDP; ++a)
+        for (int bb = 0; bb < nDP; ++bb) {
+          const double v = w * ev.displacement(a, q) * ev.displacement(bb, q);
+          for (int i = 0; i < d; ++i)
+            K[static_cast<std::size_t>(S.displacementOffset(i) + a) * L + S.displacementOffset(i) + bb] += v;
+        }
+      for (int a = 0; a < nCP; ++a)
+        for (int bb = 0; bb < nCP; ++bb) {
+          const double v = w * ev.rotation(a, q) * ev.rotation(bb, q);
+          for (int c = 0; c < r; ++c)
+            K[static_cast<std::size_t>(S.rotationOffset(c) + a) * L + S.rotationOffset(c) + bb] += v;
+        }
+    }
+    const long long* g = S.elementDofs(e);
+    std::copy(g, g + L, gids.begin());
+    for (int i = 0; i < L; ++i)
+      M->sumIntoGlobalValues(gids[i], Teuchos::ArrayView<const GO>(gids),
+                             Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
+  }
+  M->endAssembly();
+  impl_->fieldMass = M;
+  return M;
 }
 
 Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::matrix() const { return impl_->matrix; }

@@ -87,6 +87,11 @@ public:
   /// O(1) entries from B either way). Solve D M D y = D b, x = D y (DESIGN §3: "equilibrate").
   Teuchos::RCP<const MultiVector> physicalScaling(double twoMu) const;
   const disc::MixedElasticitySpace& space() const { return *space_; }
+  /// The L² mass matrices of the displacement (element-block diagonal) and rotation fields,
+  /// (u, v) and (θ, η), in one matrix with the system's graph and maps (σ rows zero, no 2μ):
+  /// the u and θ blocks of the block-diagonal preconditioner (DESIGN §6). Computed on the first
+  /// call after assemble() and cached until the next assemble().
+  Teuchos::RCP<const CrsMatrix> fieldMassMatrix() const;
 
   struct Impl;
 

@@ -18,7 +18,7 @@
 #include <sc/disc/FaceDofPoints.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
-#include <sc/solvers/DirectSolver.hpp>
+#include <sc/solvers/LinearSolver.hpp>
 
 #include "sc/contact/ContactSummary.hpp"
 #include "sc/contact/Obstacle.hpp"
@@ -646,18 +646,17 @@ double ActiveSetSolver::trescaBound(const ContactPoint& p) const
 }
 
 void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
-                            solvers::DirectSolver& solver, MultiVector& x,
-                            const MultiVector* scaling)
+                            solvers::LinearSolver& solver, MultiVector& x)
 {
   fixedPoint_ = false;
   const bool coulomb = settings_.needsFriction() && settings_.frictionLaw == core::FrictionLaw::Coulomb;
   if (!coulomb || coulombMethod_ == "Newton") {
-    solveActiveSet(K, b, solver, x, scaling);
+    solveActiveSet(K, b, solver, x);
     return;
   }
   if (coulombMethod_ == "Newton, fixed point fallback") {
     try {
-      solveActiveSet(K, b, solver, x, scaling);
+      solveActiveSet(K, b, solver, x);
       return;
     } catch (const core::ConvergenceError& e) {
       // Every rank throws together (the decisions are collective): fall back on all of them.
@@ -674,7 +673,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   for (auto& p : points_)
     p.frictionBound = settings_.frictionCoefficient * std::max(0.0, -p.sigmaN);
   for (outer = 1; outer <= maxFixedPointIterations_; ++outer) {
-    solveActiveSet(K, b, solver, x, scaling);
+    solveActiveSet(K, b, solver, x);
     total += stats_.newtonIterations;
     double change = 0.0, size = 0.0;
     for (auto& p : points_) {
@@ -706,13 +705,8 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
 }
 
 void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
-                                     solvers::DirectSolver& solver, MultiVector& x,
-                                     const MultiVector* scaling)
+                                     solvers::LinearSolver& solver, MultiVector& x)
 {
-  Teuchos::RCP<const Tpetra::Vector<>> D;
-  if (scaling)
-    D = scaling->getVector(0);
-  MultiVector y(b.getMap(), 1), scaledRhs(b.getMap(), 1);
   stats_ = ContactStatistics();
   MultiVector rhs(b.getMap(), 1);
   std::vector<std::vector<long long>> history;  // local state signature per iteration
@@ -728,23 +722,16 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     return s;
   };
   history.push_back(signature());
-  // Contact rows make the system non-symmetric.
-  solver.setSymmetric(false);
   for (int it = 1; it <= maxIterations_; ++it) {
     const auto stepStart = std::chrono::steady_clock::now();
     auto A = modifiedMatrix(K, rhs, b);
-    if (D.is_null()) {
-      // Same graph every step: the solver keeps its symbolic analysis and refactorises.
-      solver.setOperator(A);
-      solver.solve(rhs, x);
-    } else {
-      A->leftScale(*D);
-      A->rightScale(*D);
-      scaledRhs.elementWiseMultiply(1.0, *D, rhs, 0.0);
-      solver.setOperator(A);
-      solver.solve(scaledRhs, y);
-      x.elementWiseMultiply(1.0, *D, y, 0.0);
-    }
+    // Contact rows make the system non-symmetric. Same graph every step: a direct solver keeps
+    // its symbolic analysis and refactorises; x (the previous iterate) is a Krylov solver's
+    // initial guess.
+    solver.setOperator(A, false);
+    solver.solve(rhs, x);
+    if (solver.isIterative())
+      stats_.linearIterationsPerStep.push_back(solver.lastSolveStats().iterations);
     stats_.newtonIterations = it;
     evaluate(K, b, x);
     const int changes = updateState(false);

@@ -36,7 +36,7 @@ namespace sc::disc {
 class MixedElasticitySpace;
 }
 namespace sc::solvers {
-class DirectSolver;
+class LinearSolver;
 }
 
 namespace sc::contact {
@@ -77,6 +77,7 @@ struct ContactStatistics {
   int fixedPointIterations = 0;  ///< outer Coulomb fixed-point steps (0: Newton converged)
   bool converged = false;
   std::vector<int> changesPerIteration;
+  std::vector<int> linearIterationsPerStep;  ///< Krylov iterations per Newton step (Krylov solvers)
 };
 
 /// Throws InputError naming 'Discretization/Degree' if contact at this degree and dimension is
@@ -110,11 +111,12 @@ public:
   void setInitialState(const std::vector<ContactPoint>& previous);
 
   /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact
-  /// terms; x: initial guess in, solution out. Throws ConvergenceError if the state does not
-  /// settle within the limits (statistics() then says converged = false).
-  /// `scaling` (optional): the symmetric block scaling D of the assembler (physicalScaling).
-  void solve(const CrsMatrix& K, const MultiVector& b, solvers::DirectSolver& solver,
-             MultiVector& x, const MultiVector* scaling = nullptr);
+  /// terms; x: initial guess in, solution out (each Newton step starts the linear solver from the
+  /// previous iterate). Throws ConvergenceError if the state does not settle within the limits
+  /// (statistics() then says converged = false). The solver gets each step's modified matrix
+  /// (non-symmetric) unscaled: scaling and preconditioning are the solver's (LinearSolver).
+  void solve(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
+             MultiVector& x);
 
   /// Called after every Newton step on every rank (collective data only): the step number,
   /// the global number of points whose state changed, and the step's wall time in seconds.
@@ -130,8 +132,8 @@ public:
 private:
   void evaluate(const CrsMatrix& K, const MultiVector& b, const MultiVector& x);
   int updateState(bool allowFlipRemedy);
-  void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::DirectSolver& solver,
-                      MultiVector& x, const MultiVector* scaling);
+  void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
+                      MultiVector& x);
   double trescaBound(const ContactPoint& p) const;
   Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs,
                                          const MultiVector& b) const;

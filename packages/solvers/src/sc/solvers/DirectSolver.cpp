@@ -1,10 +1,7 @@
 // Common part of the direct solvers: operator bookkeeping (graph check for symbolic reuse),
-// equilibration around the concrete factorisation, the residual check after each solve.
+// equilibration around the concrete factorisation. The residual check is LinearSolver's.
 
 #include <sc/solvers/DirectSolver.hpp>
-
-#include <cmath>
-#include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_Time.hpp>
@@ -51,14 +48,15 @@ unsigned long long localGraphHash(const CrsMatrix& A)
 DirectSolver::DirectSolver() = default;
 DirectSolver::~DirectSolver() = default;
 
-void DirectSolver::setOperator(const Teuchos::RCP<const CrsMatrix>& A)
+void DirectSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bool symmetric)
 {
-  SC_THROW_IF(A.is_null(), sc::core::InternalError, name() << " solver: setOperator(null)");
-  SC_THROW_IF(!A->isFillComplete(), sc::core::InternalError,
-              name() << " solver: the operator must be fill-complete");
-  SC_THROW_IF(A->getGlobalNumRows() != A->getGlobalNumCols(), sc::core::InternalError,
-              name() << " solver: the operator is " << A->getGlobalNumRows() << " x "
-                     << A->getGlobalNumCols() << ", not square");
+  if (symmetric != factorizedSymmetric_) {
+    // LDLᵀ and LU analyses differ (MUMPS SYM), and so does the Ruiz scaling (D_r = D_c or not).
+    factorizedSymmetric_ = symmetric;
+    symbolicValid_ = false;
+    equilibration_.reset();
+    symmetryChanged();
+  }
   const unsigned long long hash = localGraphHash(*A);
   bool sameGraph = symbolicValid_ && !A_.is_null() && A_->getComm().get() == A->getComm().get() &&
                    A_->getGlobalNumRows() == A->getGlobalNumRows() &&
@@ -72,15 +70,6 @@ void DirectSolver::setOperator(const Teuchos::RCP<const CrsMatrix>& A)
   symbolicValid_ = globalSame == 1;
   numericValid_ = false;
   scaledValid_ = false;
-}
-
-void DirectSolver::setSymmetric(bool symmetric)
-{
-  if (symmetric == symmetric_) return;
-  symmetric_ = symmetric;
-  symbolicValid_ = numericValid_ = scaledValid_ = false;
-  equilibration_.reset();
-  symmetryChanged();
 }
 
 void DirectSolver::setEquilibration(bool equilibrate)
@@ -110,7 +99,7 @@ Teuchos::RCP<const CrsMatrix> DirectSolver::operatorToFactor()
     Teuchos::Time timer("equilibration");
     timer.start(true);
     if (!equilibration_)
-      equilibration_ = std::make_unique<RuizEquilibration>(symmetric_, equilibrationIterations_,
+      equilibration_ = std::make_unique<RuizEquilibration>(factorizedSymmetric_, equilibrationIterations_,
                                                            0.1);
     equilibration_->compute(*A_);
     scaledA_ = equilibration_->scaledCopy(*A_);
@@ -150,12 +139,9 @@ void DirectSolver::numericFactorization()
   numericValid_ = true;
 }
 
-void DirectSolver::solve(const MultiVector& b, MultiVector& x)
+void DirectSolver::solveOperator(const MultiVector& b, MultiVector& x)
 {
   if (!numericValid_) numericFactorization();
-  SC_THROW_IF(b.getNumVectors() != x.getNumVectors(), sc::core::InternalError,
-              name() << " solver: b has " << b.getNumVectors() << " columns, x has "
-                     << x.getNumVectors());
   Teuchos::Time timer("solve");
   timer.start(true);
   if (equilibrate_) {
@@ -170,31 +156,6 @@ void DirectSolver::solve(const MultiVector& b, MultiVector& x)
   }
   stats_.solveSeconds = timer.stop();
   ++stats_.solves;
-
-  // Residual with the caller's A: catches a wrong symmetry flag, a singular pivot that slipped
-  // through, or loss of accuracy, on every rank at once (norms are collective).
-  MultiVector r(b, Teuchos::Copy);
-  A_->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
-  const size_t m = b.getNumVectors();
-  Teuchos::Array<double> rNorm(m), bNorm(m);
-  r.norm2(rNorm());
-  b.norm2(bNorm());
-  double worst = 0.0;
-  for (size_t j = 0; j < m; ++j) {
-    const double rel = bNorm[j] > 0.0 ? rNorm[j] / bNorm[j] : rNorm[j];
-    worst = std::isfinite(rel) ? std::max(worst, rel) : std::numeric_limits<double>::infinity();
-  }
-  stats_.relativeResidual = worst;
-  SC_THROW_IF(!std::isfinite(worst), sc::core::ConvergenceError,
-              name() << " solver: the solution is not finite (singular or badly scaled matrix of "
-                     << A_->getGlobalNumRows() << " rows)");
-  SC_THROW_IF(maxRelativeResidual_ > 0.0 && worst > maxRelativeResidual_,
-              sc::core::ConvergenceError,
-              name() << " solver: relative residual ‖b − A x‖/‖b‖ = " << worst
-                     << " exceeds Linear Solver/Maximum relative residual = "
-                     << maxRelativeResidual_
-                     << " (singular or nearly singular matrix, or Symmetric = true for a "
-                        "non-symmetric matrix?)");
 }
 
 }  // namespace sc::solvers

@@ -1,4 +1,4 @@
-// The "Linear Solver" sublist and the registry of direct solvers. No Tpetra headers here.
+// The "Linear Solver" sublist and the registry of solvers. No Tpetra headers here.
 
 #include <sc/solvers/LinearSolverFactory.hpp>
 
@@ -9,6 +9,7 @@
 
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
+#include <sc/solvers/IterativeSolver.hpp>
 #include <sc/solvers/Klu2Solver.hpp>
 #include <sc/solvers/MumpsSolver.hpp>
 
@@ -24,18 +25,18 @@ const std::vector<std::string>& orderingNames()
   return names;
 }
 
-using Builder = std::function<Teuchos::RCP<DirectSolver>(const Teuchos::ParameterList&)>;
+using Builder = std::function<Teuchos::RCP<LinearSolver>(const Teuchos::ParameterList&)>;
 
 // Registered types, in the order listed to users.
 const std::vector<std::pair<std::string, Builder>>& registry()
 {
   static const std::vector<std::pair<std::string, Builder>> types = {
       {"KLU2",
-       [](const Teuchos::ParameterList&) -> Teuchos::RCP<DirectSolver> {
+       [](const Teuchos::ParameterList&) -> Teuchos::RCP<LinearSolver> {
          return Teuchos::rcp(new Klu2Solver());
        }},
       {"MUMPS",
-       [](const Teuchos::ParameterList& pl) -> Teuchos::RCP<DirectSolver> {
+       [](const Teuchos::ParameterList& pl) -> Teuchos::RCP<LinearSolver> {
          const auto& mp = pl.sublist("MUMPS");
          MumpsOptions o;
          o.memoryRelaxationPercent = mp.get<int>("Memory relaxation percent");
@@ -46,6 +47,20 @@ const std::vector<std::pair<std::string, Builder>>& registry()
              names.begin());
          o.verbose = pl.get<bool>("Verbose");
          return Teuchos::rcp(new MumpsSolver(o));
+       }},
+      {"Iterative",
+       [](const Teuchos::ParameterList& pl) -> Teuchos::RCP<LinearSolver> {
+         const auto& il = pl.sublist("Iterative");
+         IterativeOptions o;
+         o.method = il.get<std::string>("Method");
+         o.tolerance = il.get<double>("Tolerance");
+         o.maxIterations = il.get<int>("Maximum iterations");
+         o.restart = il.get<int>("Restart");
+         o.outputFrequency = il.get<int>("Output frequency");
+         o.stressBlock = il.get<std::string>("Stress block");
+         o.directList = pl;  // the sub-solver inherits MUMPS options and equilibration
+         o.directList.remove("Iterative");
+         return Teuchos::rcp(new IterativeSolver(o));
        }},
   };
   return types;
@@ -66,12 +81,16 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
     using namespace sc::core;
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
     declareChoice(*pl, "Type", "MUMPS", knownTypes(),
-                  "Direct solver for the saddle-point system (DESIGN §6): KLU2 (Amesos2; gathers "
-                  "the matrix on rank 0, serial LU) or MUMPS (parallel multifrontal LU/LDLᵀ).");
-    declareBool(*pl, "Symmetric", false,
-                "The matrix is symmetric (no contact rows): MUMPS then factorises LDLᵀ (SYM = 2) "
-                "from the lower triangle, about half the work and memory. Must be false once "
-                "contact rows are replaced (DESIGN §3). KLU2 ignores it.");
+                  "Solver for the saddle-point system (DESIGN §6): KLU2 (Amesos2; gathers the "
+                  "matrix on rank 0, serial LU), MUMPS (parallel multifrontal LU/LDLᵀ) or "
+                  "Iterative (Belos MINRES/GMRES with the block-diagonal preconditioner, see the "
+                  "Iterative sublist; docs/solvers.md).");
+    declareBool(*pl, "Symmetric", true,
+                "Exploit symmetry when the system is symmetric (elasticity without contact rows; "
+                "the application knows which systems are): MUMPS factorises LDLᵀ (SYM = 2), about "
+                "half the work and memory, and Iterative uses MINRES. false: always LU / GMRES. "
+                "Systems with contact rows are non-symmetric (DESIGN §3) and always use LU / "
+                "GMRES. KLU2 ignores it.");
     declareBool(*pl, "Equilibrate", true,
                 "Scale rows and columns (Ruiz, powers of two; symmetric if Symmetric = true) before "
                 "factorising: the stress, displacement and rotation blocks differ by orders of "
@@ -86,7 +105,31 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                 "check.",
                 0.0, false, kInfinity, false);
     declareBool(*pl, "Verbose", false, "Let MUMPS print its diagnostics (ICNTL(1..4)).");
-    auto& mp = pl->sublist("MUMPS", false, "Options of the MUMPS solver (used when Type = MUMPS).");
+    auto& il = pl->sublist("Iterative", false,
+                           "Options of the Krylov solver (used when Type = Iterative; "
+                           "docs/solvers.md).");
+    declareChoice(il, "Method", "Auto", IterativeSolver::methods(),
+                  "Belos method: MINRES (symmetric systems, SPD preconditioner), GMRES, or Auto "
+                  "(MINRES when the system is symmetric and Symmetric = true, GMRES otherwise, "
+                  "e.g. with contact rows).");
+    declareReal(il, "Tolerance", 1e-8,
+                "Relative residual ‖b − A x‖/‖b‖ of the scaled system to reach (checked on the true "
+                "residual, not only Belos' own).",
+                0.0, false, 1.0, false);
+    declareInt(il, "Maximum iterations", 1000,
+               "Krylov iterations per solve (all restarts); reaching it without the tolerance is "
+               "an error naming the residual reached.",
+               1, 1000000);
+    declareInt(il, "Restart", 300, "GMRES: Krylov subspace size before a restart.", 1, 100000);
+    declareInt(il, "Output frequency", 0,
+               "Print Belos' residual every this many iterations (0: never).", 0, 1000000);
+    declareChoice(il, "Stress block", "MUMPS", IterativeSolver::stressBlockSolvers(),
+                  "Solver of the stress block S_σ = A + (2μ)⁻¹B_uᵀM_u⁻¹B_u of the block-diagonal "
+                  "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (DESIGN §6): MUMPS or KLU2 (exact: "
+                  "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
+                  "block), or MueLu (smoothed aggregation AMG, one V-cycle: not robust, the kernel "
+                  "of div; offered for comparison). SuperLU is not in Debian's Trilinos.");
+    auto& mp = pl->sublist("MUMPS", false, "Options of the MUMPS solver (used when Type = MUMPS, or as the Iterative stress block).");
     declareInt(mp, "Memory relaxation percent", 30,
                "ICNTL(14): workspace added to the analysis estimate, in percent. Pivoting in "
                "indefinite systems can need more; see Workspace retries.",
@@ -105,7 +148,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
   return valid;
 }
 
-Teuchos::RCP<DirectSolver> LinearSolverFactory::create(const Teuchos::ParameterList& list)
+Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterList& list)
 {
   const auto types = knownTypes();
   if (list.isParameter("Type") && list.isType<std::string>("Type")) {
@@ -125,16 +168,27 @@ Teuchos::RCP<DirectSolver> LinearSolverFactory::create(const Teuchos::ParameterL
   const auto it = std::find_if(registry().begin(), registry().end(),
                                [&](const auto& t) { return t.first == type; });
   auto solver = it->second(pl);
-  solver->setSymmetric(pl.get<bool>("Symmetric"));
-  solver->setEquilibration(pl.get<bool>("Equilibrate"));
-  solver->setEquilibrationIterations(pl.get<int>("Equilibration iterations"));
+  solver->setExploitSymmetry(pl.get<bool>("Symmetric"));
   solver->setMaximumRelativeResidual(pl.get<double>("Maximum relative residual"));
+  if (auto direct = Teuchos::rcp_dynamic_cast<DirectSolver>(solver); !direct.is_null()) {
+    direct->setEquilibration(pl.get<bool>("Equilibrate"));
+    direct->setEquilibrationIterations(pl.get<int>("Equilibration iterations"));
+  }
   return solver;
+}
+
+Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList)
+{
+  return LinearSolverFactory::create(linearSolverList);
 }
 
 Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList)
 {
-  return LinearSolverFactory::create(linearSolverList);
+  auto direct = Teuchos::rcp_dynamic_cast<DirectSolver>(LinearSolverFactory::create(linearSolverList));
+  SC_THROW_IF(direct.is_null(), sc::core::InputError,
+              "Linear Solver/Type = \"" << linearSolverList.get<std::string>("Type")
+                  << "\" is not a direct solver here; use KLU2 or MUMPS");
+  return direct;
 }
 
 }  // namespace sc::solvers

@@ -1,5 +1,5 @@
 #pragma once
-// What the last factorisations and solve of a DirectSolver cost and how accurate the solve was.
+// What the last factorisations and solve of a LinearSolver cost and how accurate the solve was.
 
 namespace sc::solvers {
 
@@ -20,9 +20,15 @@ struct SolveStatistics {
 
   int equilibrationIterations = 0;  ///< Ruiz sweeps of the last equilibration (0: off)
 
-  /// max over right-hand sides of ‖b − A x‖₂ / ‖b‖₂ with the caller's (unscaled) A, after the
-  /// last solve (‖b‖ = 0 counts as ‖b − A x‖).
+  /// max over right-hand sides of ‖b − A x‖₂ / ‖b‖₂ of the working system (D A D with the
+  /// LinearSolver's scaling), after the last solve (‖b‖ = 0 counts as ‖b − A x‖).
   double relativeResidual = 0.0;
+
+  // Krylov solvers (-1 / 0 for direct solvers):
+  int iterations = -1;          ///< Krylov iterations of the last solve (all restarts)
+  long long totalIterations = 0;  ///< Krylov iterations since the solver was built
+  int preconditionerSetups = 0;   ///< preconditioner (re)builds since the solver was built
+  double preconditionerSeconds = 0.0;  ///< wall-clock seconds of the last preconditioner build
 
   /// Entries in the factors (KLU2: nnz(L)+nnz(U); MUMPS: INFOG(29)); -1 if unknown.
   long long factorNonzeros = -1;

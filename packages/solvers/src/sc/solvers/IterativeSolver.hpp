@@ -1,0 +1,67 @@
+#pragma once
+// Krylov solver for the 3×3 mixed system (DESIGN §6): Belos MINRES (symmetric operator, SPD
+// preconditioner) or GMRES (contact rows: non-symmetric), preconditioned by the block diagonal
+//
+//   P = diag(S_σ, 2μ M_u, 2μ M_θ),   S_σ = A + (2μ)⁻¹ B_uᵀ M_u⁻¹ B_u,
+//
+// taken from the operator actually solved: S_σ = K_σσ + K_σu (2μ M_u)⁻¹ K_uσ, so replaced contact
+// rows are in S_σ as DESIGN §6 asks (rebuilt at every setOperator). With the physical scaling D of
+// LinearSolver the blocks are formed in the scaled system (D P D). M_u⁻¹ is exact (element blocks
+// inverted); the θ block is diag(2μ M_θ). S_σ⁻¹ is applied by the "Stress block" sub-solver:
+//   - MUMPS or KLU2: exact (robust in h and λ; the cost of a direct solve of the σ block, which
+//     is SPD and smaller than the saddle-point system);
+//   - MueLu: smoothed-aggregation AMG, one V-cycle. Not robust (the kernel of div): offered to
+//     measure that, docs/solvers.md.
+// Geometric multigrid with vertex-patch smoothers (DESIGN §6) is the scalable S_σ⁻¹ still to come
+// (issue #10).
+//
+// Convergence: Belos stops at `Tolerance` on its own residual (MINRES: the preconditioned one);
+// the true relative residual ‖b − A x‖/‖b‖ of the working system is then checked, and Belos is
+// restarted from the current iterate until it is below `Tolerance` or `Maximum iterations` are
+// spent, which is a sc::core::ConvergenceError naming the method, the iterations and the residual.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <sc/solvers/LinearSolver.hpp>
+
+namespace sc::solvers {
+
+struct IterativeOptions {
+  std::string method = "Auto";  ///< Auto (MINRES if symmetric, else GMRES), MINRES, GMRES
+  double tolerance = 1e-8;
+  int maxIterations = 1000;
+  int restart = 300;            ///< GMRES Krylov subspace size
+  int outputFrequency = 0;      ///< print the residual every n iterations (0: never)
+  std::string stressBlock = "MUMPS";  ///< MUMPS, KLU2, MueLu
+  /// The "Linear Solver" list of the direct stress-block sub-solver (Type set from stressBlock).
+  Teuchos::ParameterList directList;
+};
+
+class IterativeSolver : public LinearSolver {
+public:
+  explicit IterativeSolver(IterativeOptions options);
+  ~IterativeSolver() override;
+  std::string name() const override;
+  bool isIterative() const override { return true; }
+
+  /// Krylov methods and stress-block solvers this build offers.
+  static const std::vector<std::string>& methods();
+  static const std::vector<std::string>& stressBlockSolvers();
+
+protected:
+  void operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bool symmetric) override;
+  void solveOperator(const MultiVector& b, MultiVector& x) override;
+
+private:
+  std::string method() const;
+
+  IterativeOptions options_;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sc::solvers

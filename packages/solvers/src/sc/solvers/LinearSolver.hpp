@@ -1,0 +1,118 @@
+#pragma once
+// The one interface of every linear solver of StressContact (DESIGN §6): direct (KLU2, MUMPS) and
+// Krylov (Belos with a block preconditioner) solvers implement it, and callers (the elasticity
+// solve, the contact Newton loop, tests, benchmarks) see only it.
+//
+// Usage:
+//   auto solver = createLinearSolver(linearSolverList);      // LinearSolverFactory.hpp
+//   solver->setScaling(D);                 // optional diagonal scaling, owned here (see below)
+//   solver->setBlockStructure(blocks);     // field layout + masses, for block preconditioners
+//   solver->setOperator(A, /*symmetric=*/true);
+//   solver->solve(b, x);                   // x: initial guess in (Krylov), solution out
+//   ... change A's values (contact rows) ...
+//   solver->setOperator(A2, false);        // the solver rebuilds what depends on the values
+//   solver->solve(b, x);
+//
+// Scaling: with D set, the solver works on D A D y = D b and returns x = D y. This is the only
+// place where the physical block scaling (√(2μ) on σ, 1/√(2μ) on u and θ, DESIGN §3) is applied;
+// callers hand over the unscaled operator. Symmetry: the caller states whether its operator is
+// symmetric (contact rows make it non-symmetric, DESIGN §3); the user's `Linear Solver/Symmetric`
+// says whether the solver may exploit it (MUMPS LDLᵀ, MINRES). Both must hold.
+//
+// Every solve checks the relative residual ‖b̃ − Ã ỹ‖₂/‖b̃‖₂ of the working system (Ã = D A D,
+// b̃ = D b, the max over columns; Ã = A without scaling); a value above the limit or not finite
+// throws sc::core::ConvergenceError on every rank. With the physical scaling this is the residual
+// in which σ, u and θ rows weigh alike whatever E is.
+
+#include <string>
+
+#include <Teuchos_RCP.hpp>
+
+#include <sc/solvers/LinearAlgebraTypes.hpp>
+#include <sc/solvers/SolveStatistics.hpp>
+
+namespace sc::solvers {
+
+/// The 3×3 field layout of the mixed system (DESIGN §2): monolithic global ids [0, σ) are stress,
+/// [σ, σ + u) displacement, the rest rotation; and what block preconditioners need besides the
+/// operator. Direct solvers ignore it.
+struct BlockStructure {
+  long long stressDofs = 0, displacementDofs = 0, rotationDofs = 0;
+  /// 2μ of the material (the preconditioner's u and θ blocks are 2μ M_u, 2μ M_θ, DESIGN §6).
+  double twoMu = 1.0;
+  /// The L² mass matrices of u and θ in one matrix on the operator's row map (σ rows empty or
+  /// zero), unscaled. M_u must be element-block diagonal (discontinuous displacements).
+  Teuchos::RCP<const CrsMatrix> fieldMass;
+
+  bool isSet() const { return stressDofs + displacementDofs + rotationDofs > 0; }
+  long long begin(int field) const
+  {
+    return field == 0 ? 0 : field == 1 ? stressDofs : stressDofs + displacementDofs;
+  }
+  long long end(int field) const { return field == 2 ? begin(2) + rotationDofs : begin(field + 1); }
+};
+
+class LinearSolver {
+public:
+  virtual ~LinearSolver();
+  LinearSolver(const LinearSolver&) = delete;
+  LinearSolver& operator=(const LinearSolver&) = delete;
+
+  /// Name of the method, e.g. "MUMPS", "KLU2", "MINRES/block diagonal (S_σ: MUMPS)".
+  virtual std::string name() const = 0;
+  virtual bool isIterative() const { return false; }
+
+  /// Diagonal scaling D (owned-map vector, entries > 0), or null for none. Applies from the next
+  /// setOperator on.
+  void setScaling(const Teuchos::RCP<const Vector>& D);
+  /// Field layout and masses (see BlockStructure). Required by Krylov solvers before setOperator.
+  void setBlockStructure(const BlockStructure& blocks);
+  const BlockStructure& blockStructure() const { return blocks_; }
+
+  /// Set (or replace) the square operator A (fill-complete; row, range and domain maps with the
+  /// same global indices, each owned by exactly one rank). `symmetric` states that A = Aᵀ. A is
+  /// kept (not copied) and must stay unchanged until the next setOperator.
+  void setOperator(const Teuchos::RCP<const CrsMatrix>& A, bool symmetric);
+
+  /// x = A⁻¹ b for every column. x's values on input are the initial guess of Krylov solvers
+  /// (use the previous Newton iterate); direct solvers overwrite them.
+  void solve(const MultiVector& b, MultiVector& x);
+
+  const SolveStatistics& lastSolveStats() const { return stats_; }
+
+  /// `Linear Solver/Symmetric`: exploit a symmetric operator (default true).
+  void setExploitSymmetry(bool exploit);
+  bool exploitsSymmetry() const { return exploitSymmetry_; }
+  /// The current operator is treated as symmetric (declared symmetric and exploited).
+  bool isSymmetric() const { return symmetric_; }
+
+  /// Largest accepted relative residual of a solve (<= 0: not checked).
+  void setMaximumRelativeResidual(double limit) { maxRelativeResidual_ = limit; }
+  double maximumRelativeResidual() const { return maxRelativeResidual_; }
+
+protected:
+  LinearSolver();
+
+  /// The operator the solver works on changed: `A` is D A D (or A without scaling); `symmetric`
+  /// is the effective flag. Runs on every rank; must throw the same sc::core::Error on all.
+  virtual void operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bool symmetric) = 0;
+  /// Solve the (scaled) system A x = b; x holds the (scaled) initial guess on input.
+  virtual void solveOperator(const MultiVector& b, MultiVector& x) = 0;
+
+  /// The operator passed to operatorChanged (null before the first setOperator).
+  const Teuchos::RCP<const CrsMatrix>& workingOperator() const { return working_; }
+  const Teuchos::RCP<const Vector>& scaling() const { return D_; }
+
+  SolveStatistics stats_;
+
+private:
+  Teuchos::RCP<const CrsMatrix> A_;        // the caller's operator
+  Teuchos::RCP<const CrsMatrix> working_;  // D A D or A
+  Teuchos::RCP<const Vector> D_;
+  BlockStructure blocks_;
+  bool exploitSymmetry_ = true;
+  bool symmetric_ = false;
+  double maxRelativeResidual_ = 1e-6;
+};
+
+}  // namespace sc::solvers
