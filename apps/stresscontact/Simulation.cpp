@@ -472,6 +472,10 @@ void Simulation::recordCycle(int cycle)
                           {"relative_residual", st.relativeResidual},
                           {"symbolic_reuses", st.symbolicReuses},
                           {"factor_nonzeros", st.factorNonzeros}};
+    if (solver_->isIterative()) {
+      c["linear_solver"]["preconditioner_setups"] = st.preconditionerSetups;
+      c["linear_solver"]["preconditioner_seconds_last"] = st.preconditionerSeconds;
+    }
     if (exact_) {
       auto t = timers_.scope("errors");
       const auto e = assembly::computeErrors(*assembler_, *solution_, *exact_, *comm_);

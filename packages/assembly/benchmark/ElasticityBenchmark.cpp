@@ -1,8 +1,8 @@
 // elasticity_benchmark: assembly throughput and direct-solve time against DOFs for the mixed
 // elasticity system (issue #4). Prints one line per size and solver; numbers in docs/benchmarks.md.
 //
-//   elasticity_benchmark [--dim=2|3] [--max-dofs=N] [--degree=k] [--solvers=KLU2,MUMPS]
-//                        [--mesh-size=h]
+//   elasticity_benchmark [--dim=2|3] [--max-dofs=N] [--degree=k] [--solvers=KLU2,MUMPS,Iterative]
+//                        [--mesh-size=h] [--nu=ν] [--min-dofs=N]
 //   mpiexec -n 2 elasticity_benchmark --dim=3 --max-dofs=600000 --mesh-size=0.4
 //
 // Sizes: the initial Gmsh mesh of the unit square/cube (element size h, default 0.25 in 2D and
@@ -13,7 +13,10 @@
 // FECrsGraph of this rank's elements. Every time is the maximum over ranks (phases start after a
 // barrier); "per rank" rates are the global count / that time / number of ranks; peak memory is
 // the resident-set high-water mark (getrusage) since the start of the program, maximum and sum
-// over ranks.
+// over ranks. Iterative (issue #10): Belos MINRES with the block-diagonal preconditioner
+// (DESIGN §6) to a 1e-8 relative residual; "analyse" is then the preconditioner build (S_σ and
+// its factorisation), "factor" 0, "iters" the MINRES iterations. scripts/solver-study.sh runs the
+// tables of docs/solvers.md.
 #include <sys/resource.h>
 
 #include <cstdio>
@@ -35,7 +38,7 @@
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
-#include <sc/solvers/DirectSolver.hpp>
+#include <sc/solvers/LinearSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 
 namespace {
@@ -69,6 +72,8 @@ int main(int argc, char* argv[])
   int dim = 2, degree = 1;
   long long maxDofs = 200000;
   double meshSize = 0.0;  // 0: the default of the dimension
+  double nu = 0.3;
+  long long minDofs = 0;
   std::vector<std::string> solvers = {"KLU2", "MUMPS"};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -80,6 +85,10 @@ int main(int argc, char* argv[])
       maxDofs = std::stoll(a.substr(11));
     else if (a.rfind("--mesh-size=", 0) == 0)
       meshSize = std::stod(a.substr(12));
+    else if (a.rfind("--nu=", 0) == 0)
+      nu = std::stod(a.substr(5));
+    else if (a.rfind("--min-dofs=", 0) == 0)
+      minDofs = std::stoll(a.substr(11));
     else if (a.rfind("--solvers=", 0) == 0) {
       solvers.clear();
       std::string list = a.substr(10), item;
@@ -101,7 +110,7 @@ int main(int argc, char* argv[])
   if (meshSize <= 0.0) meshSize = dim == 2 ? 0.25 : 0.5;
   meshList.set("Initial mesh size", meshSize);
   auto refiner = sc::mesh::MeshFactory::build(meshList, dim, *comm);
-  sc::core::Material material{1.0, 0.3};
+  sc::core::Material material{1.0, nu};
   auto exact = sc::core::createExactSolution("Manufactured smooth", dim, material);
   sc::core::BoundaryConditions bcs;
   for (const char* n : {"Left", "Bottom"})
@@ -110,13 +119,13 @@ int main(int argc, char* argv[])
   if (comm->getRank() == 0) {
     std::string solverList;
     for (const auto& t : solvers) solverList += (solverList.empty() ? "" : ",") + t;
-    std::printf("# elasticity_benchmark %dD k=%d ranks=%d mesh-size=%g max-dofs=%lld solvers=%s\n"
+    std::printf("# elasticity_benchmark %dD k=%d nu=%g ranks=%d mesh-size=%g max-dofs=%lld solvers=%s\n"
                 "# times: max over ranks [s]; rates: global count / time / ranks; peakMB: RSS "
                 "high-water mark, max and sum over ranks\n",
-                dim, degree, nRanks, meshSize, maxDofs, solverList.c_str());
-    std::printf("# %9s %8s %8s %8s %8s %10s %10s %-6s %8s %8s %8s %9s %8s %8s\n", "dofs",
+                dim, degree, nu, nRanks, meshSize, maxDofs, solverList.c_str());
+    std::printf("# %9s %8s %8s %8s %8s %10s %10s %-9s %8s %8s %8s %9s %8s %8s %6s\n", "dofs",
                 "elements", "setup_s", "number_s", "assem_s", "dofs/s/rk", "elem/s/rk", "solver",
-                "analyse", "factor", "solve", "residual", "peakMB", "sumMB");
+                "analyse", "factor", "solve", "residual", "peakMB", "sumMB", "iters");
     std::fflush(stdout);
   }
   while (true) {
@@ -128,6 +137,10 @@ int main(int argc, char* argv[])
         Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
     if (space->numGlobalDofs() > maxDofs)
       break;
+    if (space->numGlobalDofs() < minDofs) {
+      refiner->refineUniformly();
+      continue;
+    }
     const double tSpace = Teuchos::Time::wallTime();
     sc::assembly::MixedElasticityAssembler assembler(space, comm);
     const double t1 = Teuchos::Time::wallTime();
@@ -143,23 +156,38 @@ int main(int argc, char* argv[])
     for (const auto& type : solvers) {
       Teuchos::ParameterList sl;
       sl.set("Type", type);
-      auto solver = sc::solvers::createDirectSolver(sl);
+      auto solver = sc::solvers::createLinearSolver(sl);
       auto x = assembler.createVector();
+      const double twoMu = 2.0 * material.shearModulus();
+      solver->setScaling(assembler.physicalScaling(twoMu)->getVector(0));
+      if (solver->isIterative()) {
+        sc::solvers::BlockStructure blocks;
+        blocks.stressDofs = space->numStressDofs();
+        blocks.displacementDofs = space->numDisplacementDofs();
+        blocks.rotationDofs = space->numRotationDofs();
+        blocks.twoMu = twoMu;
+        blocks.fieldMass = assembler.fieldMassMatrix();
+        solver->setBlockStructure(blocks);
+      }
+      comm->barrier();
+      const double tOp = Teuchos::Time::wallTime();
       solver->setOperator(assembler.matrix(), true);
+      const double opS = maxOverRanks(*comm, Teuchos::Time::wallTime() - tOp);
       comm->barrier();
       solver->solve(*assembler.rhs(), *x);
       const auto& st = solver->lastSolveStats();
-      const double analyseS = maxOverRanks(*comm, st.symbolicSeconds);
+      const double analyseS =
+          solver->isIterative() ? opS : maxOverRanks(*comm, st.symbolicSeconds);
       const double factorS = maxOverRanks(*comm, st.numericSeconds);
       const double solveS = maxOverRanks(*comm, st.solveSeconds);
       const double peakMax = maxOverRanks(*comm, peakMemoryMB());
       const double peakSum = sumOverRanks(*comm, peakMemoryMB());
       if (comm->getRank() == 0)
-        std::printf("  %9lld %8d %8.3f %8.3f %8.3f %10.3g %10.3g %-6s %8.3f %8.3f %8.3f %9.2e "
-                    "%8.0f %8.0f\n",
+        std::printf("  %9lld %8d %8.3f %8.3f %8.3f %10.3g %10.3g %-9s %8.3f %8.3f %8.3f %9.2e "
+                    "%8.0f %8.0f %6d\n",
                     dofs, elements, setupS, numberS, assembleS, dofs / assembleS / nRanks,
                     elements / assembleS / nRanks, type.c_str(), analyseS, factorS, solveS,
-                    st.relativeResidual, peakMax, peakSum);
+                    st.relativeResidual, peakMax, peakSum, st.iterations);
       std::fflush(stdout);
     }
     refiner->refineUniformly();

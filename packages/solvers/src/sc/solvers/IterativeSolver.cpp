@@ -212,9 +212,10 @@ struct IterativeSolver::Impl {
   Teuchos::RCP<const CrsMatrix> A;
   bool symmetric = false;
   Teuchos::RCP<BlockDiagonalPreconditioner> prec;
-  // What the mass blocks were built from (rebuilt when either changes).
-  const CrsMatrix* massUsed = nullptr;
-  const Vector* scalingUsed = nullptr;
+  // What the mass blocks were built from (rebuilt when either changes). Held, so that a new
+  // object can never have the address of one compared against.
+  Teuchos::RCP<const CrsMatrix> massUsed;
+  Teuchos::RCP<const Vector> scalingUsed;
   Teuchos::RCP<CrsMatrix> stressOfOperator;  // S_σ of the current operator
 };
 
@@ -277,8 +278,8 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
   m.A = A;
   m.symmetric = symmetric;
   const auto& map = A->getRowMap();
-  if (m.prec.is_null() || m.massUsed != blocks.fieldMass.get() ||
-      m.scalingUsed != scaling().get() || !m.prec->map->isSameAs(*map)) {
+  if (m.prec.is_null() || m.massUsed.get() != blocks.fieldMass.get() ||
+      m.scalingUsed.get() != scaling().get() || !m.prec->map->isSameAs(*map)) {
     // Mass blocks of the working system: D (2μ M) D.
     SC_THROW_IF(!blocks.fieldMass->getRowMap()->isSameAs(*map), sc::core::InternalError,
                 "block preconditioner: the field mass matrix's row map differs from the operator's");
@@ -315,8 +316,8 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
       prec->stressDirect = createDirectSolver(dl);
     }
     m.prec = prec;
-    m.massUsed = blocks.fieldMass.get();
-    m.scalingUsed = scaling().get();
+    m.massUsed = blocks.fieldMass;
+    m.scalingUsed = scaling();
   }
   auto& prec = *m.prec;
 
