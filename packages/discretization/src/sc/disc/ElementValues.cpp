@@ -66,6 +66,7 @@ struct Tabulation {
 struct ElementValues::Impl {
   Tabulation tab;
   View refWeights;
+  bool atPoints = false;  // tabulated at reinitAtPoints' points (no weights)
 };
 
 ElementValues::ElementValues(const MixedElasticitySpace& space, int cubatureDegree)
@@ -88,7 +89,56 @@ ElementValues::ElementValues(const MixedElasticitySpace& space, int cubatureDegr
 
 ElementValues::~ElementValues() = default;
 
+void ElementValues::reinitAtPoints(int e, const std::vector<double>& physicalPoints)
+{
+  const auto& m = space_.mesh();
+  const auto& si = space_.impl();
+  const int d = space_.dim();
+  const int n = static_cast<int>(physicalPoints.size() / 3);
+  AffineMap F(m, e);
+  // x̂ = J⁻¹ (x − x0) by the adjugate (J is 2×2 or 3×3).
+  double inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  const auto& J = F.J;
+  if (d == 2) {
+    inv[0][0] = J[1][1] / F.det;
+    inv[0][1] = -J[0][1] / F.det;
+    inv[1][0] = -J[1][0] / F.det;
+    inv[1][1] = J[0][0] / F.det;
+  } else {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+        inv[i][j] = (J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1]) / F.det;
+      }
+  }
+  View pts("points", n, d);
+  for (int q = 0; q < n; ++q)
+    for (int i = 0; i < d; ++i) {
+      double v = 0.0;
+      for (int j = 0; j < d; ++j)
+        v += inv[i][j] * (physicalPoints[q * 3 + j] - F.x0[j]);
+      pts(q, i) = v;
+    }
+  nq_ = n;
+  impl_->tab.tabulate(si, pts);
+  impl_->atPoints = true;
+  points_.assign(static_cast<std::size_t>(n) * 3, 0.0);
+  weights_.assign(n, 0.0);
+  rt_.assign(static_cast<std::size_t>(space_.stressBasisSize()) * n * 3, 0.0);
+  rtDiv_.assign(static_cast<std::size_t>(space_.stressBasisSize()) * n, 0.0);
+  dp_.assign(static_cast<std::size_t>(space_.displacementBasisSize()) * n, 0.0);
+  cp_.assign(static_cast<std::size_t>(space_.rotationBasisSize()) * n, 0.0);
+  fill(e);
+}
+
 void ElementValues::reinit(int e)
+{
+  SC_THROW_IF(impl_->atPoints, core::InternalError,
+              "ElementValues::reinit after reinitAtPoints: use a separate object for cubature");
+  fill(e);
+}
+
+void ElementValues::fill(int e)
 {
   const auto& m = space_.mesh();
   const auto& si = space_.impl();
@@ -102,7 +152,7 @@ void ElementValues::reinit(int e)
     for (int i = 0; i < d; ++i)
       xh[i] = t.refPoints(q, i);
     F.map(xh, d, &points_[q * 3]);
-    weights_[q] = impl_->refWeights(q) * F.det;
+    weights_[q] = impl_->atPoints ? 0.0 : impl_->refWeights(q) * F.det;
   }
   // Contravariant Piola: φ = J φ̂ / det J, div φ = div̂ φ̂ / det J.
   for (int a = 0; a < nRT; ++a)

@@ -17,6 +17,10 @@ public:
   ElementValues(const MixedElasticitySpace& space, int cubatureDegree);
   ~ElementValues();
   void reinit(int element);
+  /// Values of `element`'s basis at arbitrary physical points (3 coordinates per point; inside or
+  /// on the element, or outside for polynomial extension), e.g. a child element's cubature points
+  /// for transfers between nested meshes. weight() is 0 then; reinit() is not allowed afterwards.
+  void reinitAtPoints(int element, const std::vector<double>& physicalPoints);
 
   int numPoints() const { return nq_; }
   /// Physical cubature point q (dim coordinates) and weight (reference weight × det J).
@@ -34,6 +38,8 @@ public:
   struct Impl;
 
 private:
+  void fill(int element);
+
   const MixedElasticitySpace& space_;
   std::unique_ptr<Impl> impl_;
   int nq_;

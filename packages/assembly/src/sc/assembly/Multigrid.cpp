@@ -1,0 +1,172 @@
+// Prolongation and vertex patches for the multigrid of the stress block (see the header).
+
+#include <sc/assembly/Multigrid.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_LAPACK.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+
+#include <sc/core/Error.hpp>
+#include <sc/disc/ElementValues.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+
+namespace sc::assembly {
+
+namespace {
+using GO = Tpetra::Map<>::global_ordinal_type;
+
+Teuchos::RCP<const Map> ownedStressMap(const disc::MixedElasticitySpace& s,
+                                       const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
+{
+  std::vector<GO> gids;
+  for (long long g : s.ownedDofs())
+    if (g < s.numStressDofs())
+      gids.push_back(g);
+  return Teuchos::rcp(new Map(s.numStressDofs(), Teuchos::ArrayView<const GO>(gids), 0, comm));
+}
+
+// Owner rank of element e (its first displacement DOF belongs to it alone).
+int elementOwner(const disc::MixedElasticitySpace& s, int e)
+{
+  return s.dofOwner(s.elementDofs(e)[s.displacementOffset(0)]);
+}
+}  // namespace
+
+Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coarse,
+                                           const disc::MixedElasticitySpace& fine,
+                                           const std::vector<int>& parent,
+                                           const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
+{
+  const auto& fm = fine.mesh();
+  SC_THROW_IF(static_cast<int>(parent.size()) != fm.numElements(), core::InternalError,
+              "stressProlongation: " << parent.size() << " parents for " << fm.numElements()
+                                     << " fine elements");
+  SC_THROW_IF(coarse.degree() != fine.degree() || coarse.dim() != fine.dim(), core::InternalError,
+              "stressProlongation: the spaces differ in degree or dimension");
+  const int d = fine.dim(), k = fine.degree(), nRT = fine.stressBasisSize();
+  const int rank = fine.rank();
+  auto rowMap = ownedStressMap(fine, comm);
+  auto domainMap = ownedStressMap(coarse, comm);
+  auto P = Teuchos::rcp(new CrsMatrix(rowMap, nRT));
+  std::vector<char> done(fine.numStressDofs(), 0);
+  disc::ElementValues evF(fine, 2 * k + 2), evC(coarse, 2 * k + 2);
+  std::vector<double> pts, G(static_cast<std::size_t>(nRT) * nRT), C(static_cast<std::size_t>(nRT) * nRT);
+  std::vector<int> ipiv(nRT);
+  Teuchos::LAPACK<int, double> lapack;
+  for (int f = 0; f < fm.numElements(); ++f) {
+    const long long* fd = fine.elementDofs(f);
+    bool needed = false;
+    for (int i = 0; i < d && !needed; ++i)
+      for (int a = 0; a < nRT && !needed; ++a) {
+        const long long g = fd[fine.stressOffset(i) + a];
+        needed = !done[g] && fine.dofOwner(g) == rank;
+      }
+    if (!needed)
+      continue;
+    evF.reinit(f);
+    const int nq = evF.numPoints();
+    pts.assign(evF.point(0), evF.point(0) + 3 * nq);
+    evC.reinitAtPoints(parent[f], pts);
+    // G c = C: G_ab = (φ_a, φ_b)_f, C_ab = (φ_a, ψ_b)_f; column-major for LAPACK.
+    std::fill(G.begin(), G.end(), 0.0);
+    std::fill(C.begin(), C.end(), 0.0);
+    for (int q = 0; q < nq; ++q) {
+      const double w = evF.weight(q);
+      for (int a = 0; a < nRT; ++a)
+        for (int b = 0; b < nRT; ++b) {
+          double gab = 0.0, cab = 0.0;
+          for (int c = 0; c < d; ++c) {
+            gab += evF.stress(a, q, c) * evF.stress(b, q, c);
+            cab += evF.stress(a, q, c) * evC.stress(b, q, c);
+          }
+          G[b * nRT + a] += w * gab;
+          C[b * nRT + a] += w * cab;
+        }
+    }
+    int info = 0;
+    lapack.GESV(nRT, nRT, G.data(), nRT, ipiv.data(), C.data(), nRT, &info);
+    SC_THROW_IF(info != 0, core::InternalError,
+                "stressProlongation: singular RT mass on element " << f << " (info " << info << ")");
+    const long long* cd = coarse.elementDofs(parent[f]);
+    double scale = 0.0;
+    for (double v : C)
+      scale = std::max(scale, std::abs(v));
+    for (int i = 0; i < d; ++i)
+      for (int a = 0; a < nRT; ++a) {
+        const long long g = fd[fine.stressOffset(i) + a];
+        if (done[g] || fine.dofOwner(g) != rank)
+          continue;
+        done[g] = 1;
+        std::vector<GO> cols;
+        std::vector<double> vals;
+        for (int b = 0; b < nRT; ++b) {
+          const double v = C[b * nRT + a];
+          if (std::abs(v) > 1e-13 * scale) {
+            cols.push_back(cd[coarse.stressOffset(i) + b]);
+            vals.push_back(v);
+          }
+        }
+        P->insertGlobalValues(g, Teuchos::ArrayView<const GO>(cols),
+                              Teuchos::ArrayView<const double>(vals));
+      }
+  }
+  P->fillComplete(domainMap, rowMap);
+  return P;
+}
+
+std::vector<std::vector<long long>> stressVertexPatches(const disc::MixedElasticitySpace& space)
+{
+  const auto& m = space.mesh();
+  const int d = space.dim(), nRT = space.stressBasisSize();
+  const int nv = m.numVertices(), ne = m.numElements();
+  // vertex -> elements around it
+  std::vector<int> count(nv + 1, 0);
+  for (int e = 0; e < ne; ++e)
+    for (int j = 0; j <= d; ++j)
+      ++count[m.elementVertices(e)[j] + 1];
+  for (int v = 0; v < nv; ++v)
+    count[v + 1] += count[v];
+  std::vector<int> star(count[nv]), fill(count.begin(), count.end() - 1);
+  for (int e = 0; e < ne; ++e)
+    for (int j = 0; j <= d; ++j)
+      star[fill[m.elementVertices(e)[j]]++] = e;
+  // local RT DOFs on some face (the others are interior)
+  std::vector<char> onFace(nRT, 0);
+  for (int lf = 0; lf <= d; ++lf)
+    for (int a : space.stressFaceLocalDofs(lf))
+      onFace[a] = 1;
+  std::vector<std::vector<long long>> patches;
+  for (int v = 0; v < nv; ++v) {
+    if (count[v] == count[v + 1])
+      continue;
+    const int first = *std::min_element(star.begin() + count[v], star.begin() + count[v + 1]);
+    if (elementOwner(space, first) != space.rank())
+      continue;
+    std::vector<long long> p;
+    for (int s = count[v]; s < count[v + 1]; ++s) {
+      const int e = star[s];
+      const int* ev = m.elementVertices(e);
+      const int local = static_cast<int>(std::find(ev, ev + d + 1, v) - ev);
+      const long long* ed = space.elementDofs(e);
+      for (int i = 0; i < d; ++i) {
+        for (int a = 0; a < nRT; ++a)
+          if (!onFace[a])
+            p.push_back(ed[space.stressOffset(i) + a]);
+        for (int lf = 0; lf <= d; ++lf)
+          if (lf != local)  // face lf is opposite local vertex lf: it contains v otherwise
+            for (int a : space.stressFaceLocalDofs(lf))
+              p.push_back(ed[space.stressOffset(i) + a]);
+      }
+    }
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    patches.push_back(std::move(p));
+  }
+  return patches;
+}
+
+}  // namespace sc::assembly

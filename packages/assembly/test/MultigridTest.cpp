@@ -1,0 +1,158 @@
+// Building blocks of the stress-block multigrid (DESIGN §6, issue #10):
+//  - the RT prolongation is exact between nested meshes: the prolongated coarse solution, a
+//    fine-mesh function, equals the coarse one (values and divergence) at the cubature points of
+//    every fine element to rounding, 2D and 3D, k = 1 and 2, at any rank count;
+//  - the vertex patches cover every σ DOF, and every rank's patches are its own vertices'.
+#include <cmath>
+#include <set>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+
+#include <sc/assembly/Multigrid.hpp>
+#include <sc/disc/ElementValues.hpp>
+
+#include "ElasticityTestProblem.hpp"
+
+namespace {
+
+TEUCHOS_UNIT_TEST(Multigrid, ProlongationIsExact)
+{
+  auto comm = Tpetra::getDefaultComm();
+  for (int dim : {2, 3})
+    for (int k : {1, 2}) {
+      Teuchos::ParameterList meshList;
+      meshList.set("Source", std::string(dim == 2 ? "Unit square" : "Unit cube"));
+      meshList.set("Initial mesh size", dim == 2 ? 0.25 : 0.5);
+      auto refiner = sc::mesh::MeshFactory::build(meshList, dim);
+      sc::core::Material material{1.0, 0.3};
+      auto exact = sc::core::createExactSolution("Manufactured smooth", dim, material, M_PI);
+      auto coarseMesh = refiner->mesh();
+      auto coarseSpace = Teuchos::rcp(new sc::disc::MixedElasticitySpace(
+          coarseMesh, k, sc::mesh::partitionElements(*coarseMesh, *comm), comm->getRank()));
+      sc::assembly::MixedElasticityAssembler ca(coarseSpace, comm);
+      sc::assembly::ElasticityData data{material, sc::test::verificationBoundaryConditions(dim),
+                                        exact.get()};
+      ca.assemble(data);
+      Teuchos::ParameterList sl;
+      sl.set("Type", std::string("MUMPS"));
+      auto solver = sc::solvers::createLinearSolver(sl);
+      auto xc = ca.createVector();
+      solver->setOperator(ca.matrix(), true);
+      solver->solve(*ca.rhs(), *xc);
+
+      const auto& step = refiner->refineUniformly();
+      auto fineMesh = refiner->mesh();
+      auto fineSpace = Teuchos::rcp(new sc::disc::MixedElasticitySpace(
+          fineMesh, k, sc::mesh::partitionElements(*fineMesh, *comm), comm->getRank()));
+      sc::assembly::MixedElasticityAssembler fa(fineSpace, comm);
+      auto P = sc::assembly::stressProlongation(*coarseSpace, *fineSpace, step.elementParent, comm);
+      // σ part of xc on P's domain map, P σ_c into a fine monolithic vector (u, θ = 0)
+      Tpetra::MultiVector<> sc(P->getDomainMap(), 1), sf(P->getRangeMap(), 1);
+      {
+        auto src = xc->getData(0);
+        auto dst = sc.getDataNonConst(0);
+        const auto& cmap = *xc->getMap();
+        for (size_t i = 0; i < sc.getLocalLength(); ++i)
+          dst[i] = src[cmap.getLocalElement(P->getDomainMap()->getGlobalElement(i))];
+      }
+      P->apply(sc, sf);
+      auto xf = fa.createVector();
+      {
+        auto src = sf.getData(0);
+        auto dst = xf->getDataNonConst(0);
+        const auto& fmap = *xf->getMap();
+        for (size_t i = 0; i < sf.getLocalLength(); ++i)
+          dst[fmap.getLocalElement(P->getRangeMap()->getGlobalElement(i))] = src[i];
+      }
+      // The fine function at the cubature points of each owned fine element against the coarse
+      // one at the same points (evaluated on the parent element): the same function.
+      auto xfo = fa.toOverlap(*xf);
+      // the coarse solution on every rank (the parent of an owned fine element may be owned by
+      // another rank in the coarse partition)
+      std::vector<long long> allGids(coarseSpace->numGlobalDofs());
+      for (std::size_t g = 0; g < allGids.size(); ++g)
+        allGids[g] = static_cast<long long>(g);
+      auto replicated = Teuchos::rcp(new Tpetra::Map<>(
+          Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+          Teuchos::ArrayView<const long long>(allGids), 0, comm));
+      auto xco = Teuchos::rcp(new Tpetra::MultiVector<>(replicated, 1));
+      xco->doImport(*xc, Tpetra::Import<>(xc->getMap(), replicated), Tpetra::INSERT);
+      const auto& fo = *xfo->getMap();
+      const auto& co = *xco->getMap();
+      const auto fv = xfo->getData(0);
+      const auto cv = xco->getData(0);
+      sc::disc::ElementValues evF(*fineSpace, 2 * k + 2), evC(*coarseSpace, 2 * k + 2);
+      double worst = 0.0, size = 0.0;
+      for (int f : fineSpace->ownedElements()) {
+        evF.reinit(f);
+        std::vector<double> pts(evF.point(0), evF.point(0) + 3 * evF.numPoints());
+        const int p = step.elementParent[f];
+        evC.reinitAtPoints(p, pts);
+        const long long* fd = fineSpace->elementDofs(f);
+        const long long* cd = coarseSpace->elementDofs(p);
+        for (int q = 0; q < evF.numPoints(); ++q)
+          for (int i = 0; i < dim; ++i) {
+            double vf[3] = {0, 0, 0}, vc[3] = {0, 0, 0}, df = 0, dc = 0;
+            for (int a = 0; a < fineSpace->stressBasisSize(); ++a) {
+              const double xfa = fv[fo.getLocalElement(fd[fineSpace->stressOffset(i) + a])];
+              const double xca = cv[co.getLocalElement(cd[coarseSpace->stressOffset(i) + a])];
+              for (int c = 0; c < dim; ++c) {
+                vf[c] += xfa * evF.stress(a, q, c);
+                vc[c] += xca * evC.stress(a, q, c);
+              }
+              df += xfa * evF.stressDiv(a, q);
+              dc += xca * evC.stressDiv(a, q);
+            }
+            for (int c = 0; c < dim; ++c) {
+              worst = std::max(worst, std::abs(vf[c] - vc[c]));
+              size = std::max(size, std::abs(vc[c]));
+            }
+            worst = std::max(worst, std::abs(df - dc));
+          }
+      }
+      double g[2] = {worst, size}, r[2];
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 2, g, r);
+      out << dim << "D k=" << k << ": max |P σ_H − σ_H| at fine cubature points " << r[0]
+          << " (max |σ_H| " << r[1] << ")\n";
+      TEST_COMPARE(r[0], <=, 1e-11 * r[1]);
+    }
+}
+
+TEUCHOS_UNIT_TEST(Multigrid, PatchesCoverTheStressDofs)
+{
+  auto comm = Tpetra::getDefaultComm();
+  Teuchos::ParameterList meshList;
+  meshList.set("Source", std::string("Unit square"));
+  meshList.set("Initial mesh size", 0.25);
+  auto refiner = sc::mesh::MeshFactory::build(meshList, 2);
+  auto m = refiner->mesh();
+  sc::disc::MixedElasticitySpace space(m, 1, sc::mesh::partitionElements(*m, *comm), comm->getRank());
+  const auto patches = sc::assembly::stressVertexPatches(space);
+  std::set<long long> covered;
+  std::size_t largest = 0;
+  for (const auto& p : patches) {
+    covered.insert(p.begin(), p.end());
+    largest = std::max(largest, p.size());
+  }
+  // every σ DOF is in some rank's patch: count the union over ranks
+  std::vector<int> mine(space.numStressDofs(), 0), all(space.numStressDofs(), 0);
+  for (long long g : covered)
+    mine[g] = 1;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(mine.size()), mine.data(), all.data());
+  int missing = 0;
+  for (int v : all)
+    missing += v == 0;
+  long long nPatches = static_cast<long long>(patches.size()), total = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &nPatches, &total);
+  out << total << " patches for " << m->numVertices() << " vertices, largest " << largest
+      << " DOFs, " << missing << " σ DOFs uncovered\n";
+  TEST_EQUALITY(missing, 0);
+  TEST_EQUALITY(total, static_cast<long long>(m->numVertices()));
+  TEST_COMPARE(largest, <=, 64u);  // DESIGN §6: ≤ 64 DOFs in 2D k = 1
+}
+
+}  // namespace
