@@ -59,6 +59,18 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);
+  {
+    // The stress-block multigrid needs the nested mesh hierarchy, which the application does not
+    // keep yet (issue #10): say so before any work.
+    const auto& ls = params_->sublist("Linear Solver");
+    SC_THROW_IF(ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative" &&
+                    ls.isSublist("Iterative") && ls.sublist("Iterative").isParameter("Stress block") &&
+                    ls.sublist("Iterative").get<std::string>("Stress block") == "Multigrid",
+                core::InputError,
+                "Linear Solver/Iterative/Stress block = Multigrid is not available in the "
+                "application yet (it needs the nested mesh hierarchy, which only the C++ API "
+                "provides: solvers::BlockStructure::multigrid, docs/solvers.md); use MUMPS or KLU2");
+  }
   estimatorSettings_ = estimator::EstimatorSettings::fromParameters(params_->sublist("Estimator"));
   adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
@@ -222,6 +234,7 @@ void Simulation::prepareSolver()
   solver_->setScaling(assembler_->physicalScaling(twoMu)->getVector(0));
   if (solver_->isIterative()) {
     solvers::BlockStructure blocks;
+    blocks.dimension = space_->dim();
     blocks.stressDofs = space_->numStressDofs();
     blocks.displacementDofs = space_->numDisplacementDofs();
     blocks.rotationDofs = space_->numRotationDofs();

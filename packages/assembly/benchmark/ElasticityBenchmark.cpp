@@ -162,6 +162,7 @@ int main(int argc, char* argv[])
       solver->setScaling(assembler.physicalScaling(twoMu)->getVector(0));
       if (solver->isIterative()) {
         sc::solvers::BlockStructure blocks;
+        blocks.dimension = space->dim();
         blocks.stressDofs = space->numStressDofs();
         blocks.displacementDofs = space->numDisplacementDofs();
         blocks.rotationDofs = space->numRotationDofs();

@@ -11,6 +11,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/assembly/Multigrid.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/core/Parameters.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -45,6 +46,9 @@ struct VerificationSetup {
   std::string solver = "KLU2";  ///< Linear Solver/Type: KLU2, MUMPS, Iterative
   /// Extra entries of the "Linear Solver" list (e.g. the Iterative sublist).
   Teuchos::ParameterList solverOptions;
+  /// Keep the nested hierarchy (prolongations, vertex patches) for Stress block = Multigrid: the
+  /// initial mesh is the coarsest level and level 0 is its first uniform refinement.
+  bool multigrid = false;
   /// false: level l is the previous level refined uniformly (bisection); true: level l is a new
   /// Gmsh mesh of size meshSize / 2^l (same element quality on every level).
   bool remesh = false;
@@ -91,8 +95,19 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   solverList.set("Type", s.solver);
   auto solver = solvers::createLinearSolver(solverList);
   std::vector<LevelResult> results;
+  std::vector<solvers::MultigridLevel> hierarchy;
+  Teuchos::RCP<disc::MixedElasticitySpace> previous;
+  if (s.multigrid) {
+    auto m0 = refiner->mesh();
+    previous = Teuchos::rcp(new disc::MixedElasticitySpace(m0, s.degree, mesh::partitionElements(*m0, *comm),
+                                                           comm->getRank()));
+    hierarchy.push_back({});
+  }
   for (int level = 0; level < s.levels; ++level) {
-    if (level > 0 && s.remesh) {
+    const mesh::RefinementStep* step = nullptr;
+    if (s.multigrid) {
+      step = &refiner->refineUniformly();
+    } else if (level > 0 && s.remesh) {
       meshList.set("Initial mesh size", s.meshSize / std::pow(2.0, level));
       refiner = mesh::MeshFactory::build(meshList, s.dim);
     } else if (level > 0) {
@@ -102,6 +117,11 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
     auto owner = s.allOnRankZero ? std::vector<int>(m->numElements(), 0)
                                  : mesh::partitionElements(*m, *comm);
     auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank()));
+    if (s.multigrid) {
+      hierarchy.push_back({assembly::stressProlongation(*previous, *space, step->elementParent, comm),
+                           assembly::stressVertexPatches(*space)});
+      previous = space;
+    }
     assembly::MixedElasticityAssembler assembler(space, comm);
     assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};
     if (!s.boundaryConditions.empty())
@@ -113,11 +133,13 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
     solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
     if (solver->isIterative()) {
       solvers::BlockStructure blocks;
+      blocks.dimension = space->dim();
       blocks.stressDofs = space->numStressDofs();
       blocks.displacementDofs = space->numDisplacementDofs();
       blocks.rotationDofs = space->numRotationDofs();
       blocks.twoMu = 2.0 * material.shearModulus();
       blocks.fieldMass = assembler.fieldMassMatrix();
+      blocks.multigrid = hierarchy;
       solver->setBlockStructure(blocks);
     }
     solver->setOperator(assembler.matrix(), true);

@@ -89,6 +89,32 @@ TEUCHOS_UNIT_TEST(IterativeSolver, RobustInHAndLambda2D) { checkRobustness(2, 3,
 
 TEUCHOS_UNIT_TEST(IterativeSolver, RobustInHAndLambda3D) { checkRobustness(3, 2, out, success); }
 
+// Stress block = Multigrid: one V(1,1) cycle on the nested hierarchy with vertex-patch smoothers
+// (DESIGN §6), the scalable route. Same bound as with the exact block.
+void checkMultigrid(int dim, int levels, Teuchos::FancyOStream& out, bool& success)
+{
+  int lo = 1 << 30, hi = 0;
+  for (double nu : {0.3, 0.49, 0.4999, 0.5}) {
+    auto s = iterativeSetup(dim, levels, nu);
+    s.multigrid = true;
+    s.solverOptions.sublist("Iterative").set("Stress block", std::string("Multigrid"));
+    const auto run = solve(s);
+    for (const auto& l : run.levels) {
+      out << dim << "D multigrid nu = " << std::setprecision(6) << nu << ", " << l.dofs
+          << " DOFs: " << l.iterations << " MINRES iterations, relative residual "
+          << l.relativeResidual << ", |σ−σh| " << l.errors.stress << "\n";
+      TEST_COMPARE(l.relativeResidual, <=, 1e-8);
+      lo = std::min(lo, l.iterations);
+      hi = std::max(hi, l.iterations);
+    }
+  }
+  out << "iterations " << lo << " .. " << hi << ", max/min " << double(hi) / lo << "\n";
+  TEST_COMPARE(lo, >, 0);
+  TEST_COMPARE(double(hi) / lo, <=, 1.5);
+}
+
+TEUCHOS_UNIT_TEST(IterativeSolver, MultigridRobust2D) { checkMultigrid(2, 3, out, success); }
+
 // The same discrete solution as MUMPS to the solver tolerance (1e-8 relative residual; the
 // difference is bounded by the condition number times that), at ν = 0.3 and 0.5, 2D and 3D.
 TEUCHOS_UNIT_TEST(IterativeSolver, AgreesWithMumps)

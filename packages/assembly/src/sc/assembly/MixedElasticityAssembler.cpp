@@ -390,7 +390,7 @@ Teuchos::RCP<const MultiVector> MixedElasticityAssembler::physicalScaling(double
   auto D = Teuchos::rcp(new MultiVector(impl_->owned, 1));
   auto data = D->getDataNonConst(0);
   const double s = std::sqrt(twoMu);
-  for (std::size_t i = 0; i < data.size(); ++i)
+  for (long i = 0; i < static_cast<long>(data.size()); ++i)
     data[i] = impl_->owned->getGlobalElement(i) < space_->numStressDofs() ? s : 1.0 / s;
   return D;
 }

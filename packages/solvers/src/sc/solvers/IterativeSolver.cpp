@@ -17,6 +17,8 @@
 #include <Teuchos_Time.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
 #include <Tpetra_Vector.hpp>
@@ -158,6 +160,226 @@ double maxOverRanks(const Teuchos::Comm<int>& comm, double v)
 
 }  // namespace
 
+// One symmetric V(1,1) cycle of geometric multigrid for S_σ (DESIGN §6): Galerkin coarse
+// operators A_{l−1} = P_lᵀ A_l P_l on the nested hierarchy, additive vertex-patch Schwarz smoother
+// B_l = Σ_i R_iᵀ A_{l,i}⁻¹ R_i (assembled as a CrsMatrix, patches solved exactly) damped by
+// 1/λ_max(B_l A_l), and a direct solve on the coarsest level.
+class StressMultigrid : public Operator {
+public:
+  struct Level {
+    Teuchos::RCP<const CrsMatrix> A, P, B;  // P: from level l−1 into l
+    double omega = 1.0;
+  };
+  std::vector<Level> levels;  // coarsest first
+  Teuchos::RCP<DirectSolver> coarse;
+  int sweeps = 1;  // smoothing steps before and after the coarse correction (V(1,1))
+  double dampingFactor = 1.0;  // ω = dampingFactor / λ_max(B A)
+  mutable long long cycles = 0;
+
+  Teuchos::RCP<const Map> getDomainMap() const override { return levels.back().A->getDomainMap(); }
+  Teuchos::RCP<const Map> getRangeMap() const override { return levels.back().A->getRangeMap(); }
+
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
+             double alpha = 1.0, double beta = 0.0) const override
+  {
+    SC_THROW_IF(mode != Teuchos::NO_TRANS || alpha != 1.0 || beta != 0.0, sc::core::InternalError,
+                "stress multigrid: only Y = V(X) is implemented");
+    vcycle(static_cast<int>(levels.size()) - 1, X, Y);
+    ++cycles;
+  }
+
+  void vcycle(int l, const MultiVector& b, MultiVector& x) const
+  {
+    if (l == 0) {
+      x.putScalar(0.0);
+      coarse->solve(b, x);
+      return;
+    }
+    const Level& L = levels[l];
+    const size_t m = b.getNumVectors();
+    L.B->apply(b, x, Teuchos::NO_TRANS, L.omega, 0.0);  // pre-smoothing from x = 0
+    MultiVector r(b, Teuchos::Copy);
+    for (int sweep = 1; sweep < sweeps; ++sweep) {
+      Tpetra::deep_copy(r, b);
+      L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+      L.B->apply(r, x, Teuchos::NO_TRANS, L.omega, 1.0);
+    }
+    Tpetra::deep_copy(r, b);
+    L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+    MultiVector rc(L.P->getDomainMap(), m, false), ec(L.P->getDomainMap(), m, false);
+    L.P->apply(r, rc, Teuchos::TRANS);
+    vcycle(l - 1, rc, ec);
+    L.P->apply(ec, x, Teuchos::NO_TRANS, 1.0, 1.0);
+    for (int sweep = 0; sweep < sweeps; ++sweep) {  // post-smoothing
+      Tpetra::deep_copy(r, b);
+      L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+      L.B->apply(r, x, Teuchos::NO_TRANS, L.omega, 1.0);
+    }
+  }
+};
+
+namespace {
+
+// B = Σ_i R_iᵀ A_i⁻¹ R_i over the patches (σ global ids) of this rank; rows of patches that other
+// ranks own are sent to them (summed by fillComplete). A_i is inverted by LAPACK (Cholesky if
+// symmetric).
+Teuchos::RCP<CrsMatrix> patchSmoother(const CrsMatrix& A,
+                                      const std::vector<std::vector<long long>>& patches,
+                                      bool symmetric)
+{
+  std::vector<GO> ov;
+  for (const auto& p : patches)
+    ov.insert(ov.end(), p.begin(), p.end());
+  std::sort(ov.begin(), ov.end());
+  ov.erase(std::unique(ov.begin(), ov.end()), ov.end());
+  const auto inv = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto ovMap = Teuchos::rcp(new Map(inv, Teuchos::ArrayView<const GO>(ov), 0, A.getComm()));
+  auto Aov = Teuchos::rcp(new CrsMatrix(ovMap, 0));
+  Aov->doImport(A, Tpetra::Import<>(A.getRowMap(), ovMap), Tpetra::INSERT);
+  Aov->fillComplete(A.getDomainMap(), A.getRangeMap());
+  const auto& colMap = *Aov->getColMap();
+  // B on the overlap rows (row length: the sizes of the patches containing the row, duplicates
+  // summed by fillComplete), then exported (added) to the owned rows.
+  std::vector<size_t> counts(ov.size(), 0);
+  for (const auto& p : patches)
+    for (GO g : p)
+      counts[ovMap->getLocalElement(g)] += p.size();
+  auto Bov = Teuchos::rcp(new CrsMatrix(ovMap, Teuchos::ArrayView<const size_t>(counts)));
+  Teuchos::LAPACK<int, double> lapack;
+  std::vector<double> dense, work;
+  std::vector<int> ipiv;
+  for (const auto& p : patches) {
+    const int m = static_cast<int>(p.size());
+    if (m == 0)
+      continue;
+    dense.assign(static_cast<std::size_t>(m) * m, 0.0);
+    for (int a = 0; a < m; ++a) {
+      typename CrsMatrix::local_inds_host_view_type inds;
+      typename CrsMatrix::values_host_view_type v;
+      Aov->getLocalRowView(ovMap->getLocalElement(p[a]), inds, v);
+      for (size_t k = 0; k < inds.extent(0); ++k) {
+        const GO g = colMap.getGlobalElement(inds(k));
+        const auto it = std::lower_bound(p.begin(), p.end(), g);
+        if (it != p.end() && *it == g)
+          dense[static_cast<std::size_t>(it - p.begin()) * m + a] = v(k);  // column-major
+      }
+    }
+    int info = 0;
+    if (symmetric) {
+      lapack.POTRF('L', m, dense.data(), m, &info);
+      SC_THROW_IF(info != 0, sc::core::ConvergenceError,
+                  "stress multigrid: a vertex-patch block is not positive definite (LAPACK potrf "
+                  "info " << info << ")");
+      lapack.POTRI('L', m, dense.data(), m, &info);
+      for (int a = 0; a < m; ++a)
+        for (int c = a + 1; c < m; ++c)
+          dense[static_cast<std::size_t>(c) * m + a] = dense[static_cast<std::size_t>(a) * m + c];
+    } else {
+      ipiv.resize(m);
+      lapack.GETRF(m, m, dense.data(), m, ipiv.data(), &info);
+      SC_THROW_IF(info != 0, sc::core::ConvergenceError,
+                  "stress multigrid: a vertex-patch block is singular (LAPACK getrf info " << info
+                                                                                       << ")");
+      work.resize(static_cast<std::size_t>(m) * 64);
+      lapack.GETRI(m, dense.data(), m, ipiv.data(), work.data(), static_cast<int>(work.size()), &info);
+    }
+    std::vector<double> row(m);
+    for (int a = 0; a < m; ++a) {
+      for (int c = 0; c < m; ++c)
+        row[c] = dense[static_cast<std::size_t>(c) * m + a];
+      Bov->insertGlobalValues(p[a], Teuchos::ArrayView<const GO>(p), Teuchos::ArrayView<const double>(row));
+    }
+  }
+  Bov->fillComplete(A.getDomainMap(), A.getRangeMap());
+  Tpetra::Export<> exporter(ovMap, A.getRowMap());
+  return Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(Bov, exporter, A.getDomainMap(),
+                                                           A.getRangeMap());
+}
+
+// λ_max(B A) by power iteration (B A is similar to an SPD operator when both are SPD).
+double largestEigenvalue(const CrsMatrix& B, const CrsMatrix& A, int iterations)
+{
+  MultiVector v(A.getDomainMap(), 1), w(A.getRangeMap(), 1), z(A.getDomainMap(), 1);
+  v.randomize();
+  double lambda = 0.0;
+  for (int it = 0; it < iterations; ++it) {
+    Teuchos::Array<double> n(1);
+    v.norm2(n());
+    v.scale(1.0 / n[0]);
+    A.apply(v, w);
+    B.apply(w, z);
+    z.norm2(n());
+    lambda = n[0];
+    Tpetra::deep_copy(v, z);
+  }
+  return lambda;
+}
+
+// The V-cycle of S (the finest level's S_σ) on the hierarchy of `blocks`.
+Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
+                                             const Teuchos::RCP<CrsMatrix>& S, bool symmetric,
+                                             const Teuchos::ParameterList& directList)
+{
+  const auto& levels = blocks.multigrid;
+  const int L = static_cast<int>(levels.size());
+  SC_THROW_IF(L < 2, sc::core::InputError,
+              "Linear Solver/Iterative/Stress block = Multigrid needs a hierarchy of nested meshes "
+              "(uniform refinements of one initial mesh); this system has "
+                  << L << " level(s). Use a Stress block of MUMPS or KLU2.");
+  // 3D vertex stars hold ~450 σ DOFs at k = 1: their dense inverses, assembled explicitly, took
+  // more than 5 GB at 262k DOFs (docs/solvers.md). 2D only until a cheaper 3D smoother exists.
+  SC_THROW_IF(blocks.dimension != 2, sc::core::InputError,
+              "Linear Solver/Iterative/Stress block = Multigrid is available in 2D only (its "
+              "vertex-patch smoother is too large in 3D, docs/solvers.md); use MUMPS or KLU2");
+  auto mg = Teuchos::rcp(new StressMultigrid());
+  mg->levels.resize(L);
+  mg->levels[L - 1].A = S;
+  for (int l = L - 1; l >= 1; --l) {
+    SC_THROW_IF(levels[l].prolongation.is_null(), sc::core::InternalError,
+                "stress multigrid: level " << l << " has no prolongation");
+    auto P = Teuchos::rcp(new CrsMatrix(*levels[l].prolongation, Teuchos::Copy));
+    const auto& A = *mg->levels[l].A;
+    if (l == L - 1) {
+      // Rows fixed by traction data (S has only its diagonal there) take no coarse correction.
+      Vector mask(P->getRangeMap());
+      auto mv = mask.getDataNonConst(0);
+      const auto& rows = *A.getRowMap();
+      const auto& cols = *A.getColMap();
+      for (LO i = 0; i < static_cast<LO>(mv.size()); ++i) {
+        const GO g = P->getRangeMap()->getGlobalElement(i);
+        typename CrsMatrix::local_inds_host_view_type inds;
+        typename CrsMatrix::values_host_view_type v;
+        A.getLocalRowView(rows.getLocalElement(g), inds, v);
+        bool offDiagonal = false;
+        for (size_t k = 0; k < inds.extent(0) && !offDiagonal; ++k)
+          offDiagonal = v(k) != 0.0 && cols.getGlobalElement(inds(k)) != g;
+        mv[i] = offDiagonal ? 1.0 : 0.0;
+      }
+      P->leftScale(mask);
+    }
+    auto AP = Teuchos::rcp(new CrsMatrix(A.getRowMap(), 0));
+    Tpetra::MatrixMatrix::Multiply(A, false, *P, false, *AP);
+    auto Ac = Teuchos::rcp(new CrsMatrix(P->getDomainMap(), 0));
+    Tpetra::MatrixMatrix::Multiply(*P, true, *AP, false, *Ac);
+    mg->levels[l].P = P;
+    mg->levels[l - 1].A = Ac;
+  }
+  for (int l = 1; l < L; ++l) {
+    auto& lev = mg->levels[l];
+    lev.B = patchSmoother(*lev.A, levels[l].patches, symmetric);
+    lev.omega = mg->dampingFactor / largestEigenvalue(*lev.B, *lev.A, 15);
+  }
+  Teuchos::ParameterList dl(directList);
+  if (!dl.isParameter("Type"))
+    dl.set("Type", std::string("MUMPS"));
+  mg->coarse = createDirectSolver(dl);
+  mg->coarse->setOperator(mg->levels[0].A, symmetric);
+  mg->coarse->numericFactorization();
+  return mg;
+}
+
+}  // namespace
+
 // diag(S_σ⁻¹, (2μM_u)⁻¹, diag(2μM_θ)⁻¹) in the working (scaled) system, as one Tpetra operator.
 class BlockDiagonalPreconditioner : public Operator {
 public:
@@ -166,7 +388,7 @@ public:
   std::vector<double> rotationInverseDiagonal;
   Teuchos::RCP<CrsMatrix> displacementInverse;
   Teuchos::RCP<DirectSolver> stressDirect;       // exact S_σ⁻¹
-  Teuchos::RCP<Operator> stressMultigrid;        // or one AMG V-cycle
+  Teuchos::RCP<Operator> stressMultigrid;        // or one AMG / geometric multigrid V-cycle
 
   Teuchos::RCP<const Map> getDomainMap() const override { return map; }
   Teuchos::RCP<const Map> getRangeMap() const override { return map; }
@@ -230,7 +452,7 @@ IterativeSolver::IterativeSolver(IterativeOptions options)
   SC_THROW_IF(std::find(s.begin(), s.end(), options_.stressBlock) == s.end(),
               sc::core::InputError,
               "Linear Solver/Iterative/Stress block = \"" << options_.stressBlock
-                  << "\" is not available; valid: MUMPS, KLU2, MueLu");
+                  << "\" is not available; valid: MUMPS, KLU2, Multigrid, MueLu");
 }
 
 IterativeSolver::~IterativeSolver() = default;
@@ -243,7 +465,7 @@ const std::vector<std::string>& IterativeSolver::methods()
 
 const std::vector<std::string>& IterativeSolver::stressBlockSolvers()
 {
-  static const std::vector<std::string> s = {"MUMPS", "KLU2", "MueLu"};
+  static const std::vector<std::string> s = {"MUMPS", "KLU2", "Multigrid", "MueLu"};
   return s;
 }
 
@@ -334,6 +556,10 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
   if (!prec.stressDirect.is_null()) {
     prec.stressDirect->setOperator(m.stressOfOperator, symmetric);
     prec.stressDirect->numericFactorization();
+  } else if (options_.stressBlock == "Multigrid") {
+    Teuchos::ParameterList dl(options_.directList);
+    dl.set("Type", std::string("MUMPS"));
+    prec.stressMultigrid = buildMultigrid(blocks, m.stressOfOperator, symmetric, dl);
   } else {
     Teuchos::ParameterList ml;
     ml.set("verbosity", "none");

@@ -25,6 +25,7 @@
 // in which σ, u and θ rows weigh alike whatever E is.
 
 #include <string>
+#include <vector>
 
 #include <Teuchos_RCP.hpp>
 
@@ -33,16 +34,30 @@
 
 namespace sc::solvers {
 
+/// One level of the nested mesh hierarchy for the multigrid of the stress block (DESIGN §6).
+struct MultigridLevel {
+  /// Exact prolongation of σ from the next coarser level into this one (σ global ids 0..#σ of
+  /// each level; row map = this level's owned σ DOFs in the order of the operator's row map on
+  /// the finest level); null on the coarsest level.
+  Teuchos::RCP<const CrsMatrix> prolongation;
+  /// σ DOF ids of the vertex patches this rank smooths on this level (unused on the coarsest).
+  std::vector<std::vector<long long>> patches;
+};
+
 /// The 3×3 field layout of the mixed system (DESIGN §2): monolithic global ids [0, σ) are stress,
 /// [σ, σ + u) displacement, the rest rotation; and what block preconditioners need besides the
 /// operator. Direct solvers ignore it.
 struct BlockStructure {
   long long stressDofs = 0, displacementDofs = 0, rotationDofs = 0;
+  int dimension = 0;  ///< 2 or 3
   /// 2μ of the material (the preconditioner's u and θ blocks are 2μ M_u, 2μ M_θ, DESIGN §6).
   double twoMu = 1.0;
   /// The L² mass matrices of u and θ in one matrix on the operator's row map (σ rows empty or
   /// zero), unscaled. M_u must be element-block diagonal (discontinuous displacements).
   Teuchos::RCP<const CrsMatrix> fieldMass;
+  /// Nested hierarchy, coarsest level first, the last level being the operator's mesh: needed by
+  /// `Stress block` = Multigrid (sc::assembly::stressProlongation, stressVertexPatches).
+  std::vector<MultigridLevel> multigrid;
 
   bool isSet() const { return stressDofs + displacementDofs + rotationDofs > 0; }
   long long begin(int field) const
