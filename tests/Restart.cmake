@@ -1,11 +1,13 @@
 # cmake -DAPP=stresscontact -DCOMPARE=compare_summaries -DMPIEXEC=mpiexec -DMPIFLAGS="a|b" -DNP=2
 #       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 [-DRTOL=1e-12]
-#       [-DIGNORE="key|..."] [-DSAME_FILES=ON] -P Restart.cmake
+#       [-DIGNORE="key|..."] [-DSAME_FILES=ON] [-DRESTART_NP=1] -P Restart.cmake
 # Checkpoint/restart of an adaptive run (issue #12, item 7; docs/adaptivity.md):
 #   1. the deck uninterrupted into OUT/full;
 #   2. the same run killed (SIGKILL, SC_KILL_IN_CYCLE) in cycle KILL_CYCLE, after that cycle's
 #      fields and CSV were written and before its summary record and checkpoint, into OUT/killed;
 #   3. `--restart OUT/killed`: it continues from the checkpoint of cycle KILL_CYCLE − 1.
+# With RESTART_NP the restart (and the uninterrupted reference run) use RESTART_NP ranks, the
+# killed run NP.
 # Then every per-cycle number of summary.json must agree with the uninterrupted run within RTOL
 # (compare_summaries), the XDMF series must list every cycle once, every cycle's .h5 and CSV must
 # be there and no temporary left; with SAME_FILES the CSVs and the .xdmf must be byte-identical.
@@ -17,14 +19,18 @@ endforeach()
 if(NOT RTOL)
   set(RTOL 1e-12)
 endif()
+if(NOT RESTART_NP)
+  set(RESTART_NP ${NP})
+endif()
 file(REMOVE_RECURSE "${OUT}")
 set(launch ${MPIEXEC} -n ${NP} ${MPIFLAGS} ${APP} ${DECK} --quiet)
+set(relaunch ${MPIEXEC} -n ${RESTART_NP} ${MPIFLAGS} ${APP} ${DECK} --quiet)
 set(sets)
 foreach(s IN LISTS SETS)
   list(APPEND sets --set "${s}")
 endforeach()
 
-execute_process(COMMAND ${launch} --output ${OUT}/full ${sets} RESULT_VARIABLE rc)
+execute_process(COMMAND ${relaunch} --output ${OUT}/full ${sets} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the uninterrupted run failed with status ${rc}")
 endif()
@@ -53,7 +59,7 @@ if(NOT killedCycles EQUAL KILL_CYCLE)
   message(FATAL_ERROR "the killed run's summary has ${killedCycles} cycles, expected ${KILL_CYCLE}")
 endif()
 
-execute_process(COMMAND ${launch} --restart ${OUT}/killed ${sets}
+execute_process(COMMAND ${relaunch} --restart ${OUT}/killed ${sets}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("restart: status ${rc}\n${out}${err}")
 if(NOT rc EQUAL 0)
