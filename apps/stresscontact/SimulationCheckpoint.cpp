@@ -95,7 +95,8 @@ std::vector<T> narrow(const std::vector<long long>& v)
 
 void Simulation::writeCheckpoint(int cycle)
 {
-  auto t = timers_.scope("output");
+  // Not timed: it is written after the cycle's timings are recorded (it is small: 0.3 MB at
+  // 54k DOFs in 2D, docs/output.md).
   // The contact points of this cycle, every rank's in rank order: on restart rank 0 holds them
   // all, so that ActiveSetSolver::setInitialState gathers the same list whatever the rank count.
   const int d = problem_.dimension;

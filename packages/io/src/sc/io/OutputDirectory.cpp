@@ -148,7 +148,7 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
     const std::string name = entry.path().filename().string();
     std::smatch m;
     if (std::regex_match(name, m, fields) || std::regex_match(name, m, csv)) {
-      if (m[2].matched || std::stol(m[1].str()) > lastCycle)
+      if (m[2].matched || m[1].length() > 9 || std::stol(m[1].str()) > lastCycle)
         stale.push_back(entry.path());
     } else if (std::regex_match(name, temporary)) {
       stale.push_back(entry.path());
