@@ -477,7 +477,7 @@ void Simulation::recordCycle(int cycle)
                           {"symbolic_reuses", st.symbolicReuses + symbolicReusesBefore_},
                           {"factor_nonzeros", st.factorNonzeros}};
     if (solver_->isIterative()) {
-      c["linear_solver"]["preconditioner_setups"] = st.preconditionerSetups;
+      c["linear_solver"]["preconditioner_setups"] = st.preconditionerSetups + preconditionerSetupsBefore_;
       c["linear_solver"]["preconditioner_seconds_last"] = st.preconditionerSeconds;
     }
     if (exact_) {

@@ -167,11 +167,12 @@ private:
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<io::XdmfWriter> writer_;
 
-  // Restart: the directory, the checkpoint read from it, and the direct solver's symbolic
-  // reuses before it (summary.json counts them over the run).
+  // Restart: the directory, the checkpoint read from it, and the linear solver's counts before
+  // it (summary.json counts symbolic reuses and preconditioner set-ups over the run).
   std::string restartDirectory_;
   std::unique_ptr<io::CheckpointFile> checkpoint_;
   long long symbolicReusesBefore_ = 0;
+  long long preconditionerSetupsBefore_ = 0;
 };
 
 }  // namespace sc::app

@@ -235,11 +235,17 @@ int Simulation::readCheckpoint()
   if (!cycles.is_array() || static_cast<int>(cycles.size()) != cycle + 1 ||
       cycles.back().value("cycle", -1) != cycle)
     bad("does not hold the summary records of cycles 0 to " + std::to_string(cycle) + " (damaged)");
-  // summary.json counts the direct solver's symbolic reuses over the run.
+  // summary.json counts the linear solver's symbolic reuses and preconditioner set-ups over the
+  // run: the restarted run's solver starts from zero.
   const Json& last = cycles.back();
-  if (last.contains("linear_solver") && last["linear_solver"].contains("symbolic_reuses") &&
-      last["linear_solver"]["symbolic_reuses"].is_number_integer())
-    symbolicReusesBefore_ = last["linear_solver"]["symbolic_reuses"].get<long long>();
+  auto count = [&](const char* key) -> long long {
+    if (last.contains("linear_solver") && last["linear_solver"].is_object() &&
+        last["linear_solver"].contains(key) && last["linear_solver"][key].is_number_integer())
+      return last["linear_solver"][key].get<long long>();
+    return 0;
+  };
+  symbolicReusesBefore_ = count("symbolic_reuses");
+  preconditionerSetupsBefore_ = count("preconditioner_setups");
 
   std::ostringstream os;
   os << "restart from " << path << ": cycle " << cycle << " complete (" << mesh_->numElements()
