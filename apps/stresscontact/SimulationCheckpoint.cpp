@@ -122,6 +122,7 @@ void Simulation::writeCheckpoint(int cycle)
     cp.setInts("mesh_dimension", {s.dim});
     cp.setInts("mesh_elements", {mesh_->numElements()});
     cp.setInts("mesh_vertices", {mesh_->numVertices()});
+    cp.setString("mesh_boundary_names", Json(mesh_->boundaryNames()).dump());
     cp.setDoubles("mesh_coordinates", s.coordinates);
     cp.setInts("mesh_element_vertices", {s.elementVertices.begin(), s.elementVertices.end()});
     cp.setInts("mesh_generations", {s.generations.begin(), s.generations.end()});
@@ -198,6 +199,12 @@ int Simulation::readCheckpoint()
   s.boundaryFaceParts = narrow<int>(cp.ints("mesh_boundary_face_parts"));
   s.curvedEdges = narrow<std::uint64_t>(cp.ints("mesh_curved_edges"));
   s.curvedEdgeParts = narrow<int>(cp.ints("mesh_curved_edge_parts"));
+  // The part ids of the state refer to the initial mesh's boundary names (a Gmsh file changed
+  // since the run was started could number them otherwise).
+  const std::string names = Json(mesh_->boundaryNames()).dump();
+  if (cp.string("mesh_boundary_names") != names)
+    bad("has the boundary parts " + cp.string("mesh_boundary_names") + ", the deck's initial mesh " +
+        names + " (was the mesh file changed?)");
   refiner_->restore(s, "checkpoint '" + path + "'");
   mesh_ = refiner_->mesh();
   if (mesh_->numElements() != scalar("mesh_elements") || mesh_->numVertices() != scalar("mesh_vertices"))
