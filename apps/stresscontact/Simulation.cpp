@@ -29,6 +29,7 @@
 #include <sc/estimator/ContactContribution.hpp>
 #include <sc/estimator/DisplacementReconstruction.hpp>
 #include <sc/estimator/ErrorEstimator.hpp>
+#include <sc/io/CheckpointFile.hpp>
 #include <sc/solvers/LinearSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <sc/io/OutputDirectory.hpp>
@@ -400,6 +401,9 @@ void Simulation::mark()
 void Simulation::checkScene()
 {
   setupMesh();
+  // --check --restart DIR: is the checkpoint readable and of this deck?
+  if (!restartDirectory_.empty())
+    readCheckpoint();
   // Would the run be able to create and write its output directory? (creates nothing)
   io::checkOutputDirectory(output_.directory, *comm_);
 }
@@ -483,10 +487,10 @@ void Simulation::recordCycle(int cycle)
     }
     c["linear_solver"] = {{"type", solver_->name()},
                           {"relative_residual", st.relativeResidual},
-                          {"symbolic_reuses", st.symbolicReuses},
+                          {"symbolic_reuses", st.symbolicReuses + symbolicReusesBefore_},
                           {"factor_nonzeros", st.factorNonzeros}};
     if (solver_->isIterative()) {
-      c["linear_solver"]["preconditioner_setups"] = st.preconditionerSetups;
+      c["linear_solver"]["preconditioner_setups"] = st.preconditionerSetups + preconditionerSetupsBefore_;
       c["linear_solver"]["preconditioner_seconds_last"] = st.preconditionerSeconds;
     }
     if (exact_) {
@@ -639,11 +643,17 @@ void Simulation::run()
   // The initial mesh is built (and the boundary names checked against it) before anything is
   // written, so that a bad scene leaves no output directory behind.
   setupMesh();
+  // --restart: the checkpoint is read and checked before anything is written (a bad or foreign
+  // checkpoint is an input error that leaves the directory as it was).
+  const int firstCycle = restartDirectory_.empty() ? 0 : readCheckpoint();
 
   io::createOutputDirectory(output_.directory, *comm_);
   // The run owns its directory: an earlier run's summary, fields and CSVs go before anything is
-  // written, so that no file of that run stands beside this one's (docs/output.md).
-  const auto removed = io::removeEarlierRunFiles(output_.directory, output_.baseName, *comm_);
+  // written, so that no file of that run stands beside this one's (docs/output.md). A restart
+  // keeps the files of the cycles it continues and removes those of the killed cycle.
+  const auto removed =
+      firstCycle == 0 ? io::removeEarlierRunFiles(output_.directory, output_.baseName, *comm_)
+                      : io::removeFilesAfterCycle(output_.directory, output_.baseName, firstCycle - 1, *comm_);
   if (!removed.empty()) {
     std::string names;
     for (std::size_t i = 0; i < removed.size() && i < 6; ++i)
@@ -656,9 +666,11 @@ void Simulation::run()
   summary_->json()["phases_missing"] = phasesMissing_;
   if (output_.writeXdmf)
     writer_ = std::make_unique<io::XdmfWriter>(comm_, output_.directory, output_.baseName);
+  if (firstCycle > 0)
+    restoreOutputs();
 
   try {
-    for (int cycle = 0;; ++cycle) {
+    for (int cycle = firstCycle;; ++cycle) {
       progress_.setCycle(cycle, adaptivity_.cycles);
       if (cycle > 0)
         refineMesh();
@@ -675,10 +687,14 @@ void Simulation::run()
       if (stopReason_.empty())
         stopReason_ = checkNextMesh();
       writeFields(cycle);
+      killIfAsked(cycle);
       recordCycle(cycle);
       summary_->currentCycle()["timings"] = timers_.cycleTimings();
       timers_.nextCycle();
       summary_->write();
+      // The next cycle can start from here (a run that stops now needs no checkpoint).
+      if (stopReason_.empty())
+        writeCheckpoint(cycle);
       if (!stopReason_.empty()) {
         progress_.report("stop", stopReason_);
         break;

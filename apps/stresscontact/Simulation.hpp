@@ -30,6 +30,7 @@ class SimplexMesh;
 class BisectionRefiner;
 }  // namespace sc::mesh
 namespace sc::io {
+class CheckpointFile;
 class RunSummary;
 class XdmfWriter;
 }  // namespace sc::io
@@ -81,6 +82,10 @@ public:
   /// All cycles; writes summary.json after each cycle and XDMF output.
   void run();
 
+  /// `--restart DIR`: run() continues the run whose output directory (this run's Output/Directory)
+  /// is \p directory from its checkpoint (docs/adaptivity.md "Checkpoint and restart").
+  void restartFrom(std::string directory) { restartDirectory_ = std::move(directory); }
+
 private:
   void setupMesh();
   void warnIfLargeDisplacement() const;
@@ -100,6 +105,18 @@ private:
   void mark();
   void writeFields(int cycle);
   void recordCycle(int cycle);
+
+  // Checkpoint/restart (SimulationCheckpoint.cpp; issue #12, item 7).
+  /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5.
+  void writeCheckpoint(int cycle);
+  /// Collective, before anything is written: read the checkpoint of restartDirectory_, check it
+  /// belongs to this deck, restore the refiner (mesh of its cycle), the marked elements and the
+  /// contact state. Returns the cycle to continue with.
+  int readCheckpoint();
+  /// After the output directory is set up: the checkpoint's summary cycles and XDMF steps.
+  void restoreOutputs();
+  /// SC_KILL_IN_CYCLE (test only): kill the process in that cycle, after its fields are written.
+  void killIfAsked(int cycle) const;
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   Teuchos::RCP<Teuchos::ParameterList> params_;
@@ -149,6 +166,13 @@ private:
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<io::XdmfWriter> writer_;
+
+  // Restart: the directory, the checkpoint read from it, and the linear solver's counts before
+  // it (summary.json counts symbolic reuses and preconditioner set-ups over the run).
+  std::string restartDirectory_;
+  std::unique_ptr<io::CheckpointFile> checkpoint_;
+  long long symbolicReusesBefore_ = 0;
+  long long preconditionerSetupsBefore_ = 0;
 };
 
 }  // namespace sc::app

@@ -1,6 +1,7 @@
 // stresscontact: the XML-driven application (docs/user-guide.md).
 //
 //   stresscontact [INPUT.xml] [--output DIR] [--set Path/To/Key=value ...] [--check] [--quiet]
+//   stresscontact [INPUT.xml] --restart DIR [--set ...]    (continue a killed adaptive run)
 //   stresscontact --print-parameters | --help | --version
 //
 // Without INPUT it runs the default Hertz 2D deck (input/hertz2d.xml). The whole parameter list
@@ -36,16 +37,20 @@ Options:
   --output DIR              output directory (overrides Output/Directory)
   --set Path/To/Key=value   override one parameter, e.g. --set "Material/Poisson ratio=0.4999";
                             may be repeated; the value's type is the key's type
+  --restart DIR             continue the run whose output directory is DIR from its last complete
+                            cycle (DIR/checkpoint.h5, written after every cycle); give the same
+                            deck and --set options as that run; the output goes on in DIR
   --check                   validate the deck and the scene (mesh, boundary names), write nothing
   --quiet                   no progress lines
 
 Outputs (in the output directory): summary.json, solution.xdmf + solution_c<N>.h5, and with
-contact contact_cycle<N>.csv. Exit status: 0 success, 1 bad input, 2 no convergence, 3 other.
+contact contact_cycle<N>.csv; checkpoint.h5 for --restart. Exit status: 0 success, 1 bad input, 2 no convergence, 3 other.
 )";
 
 struct CommandLine {
   std::string input;
   std::string output;
+  std::string restart;
   std::vector<std::string> overrides;
   bool check = false, quiet = false, printParameters = false, help = false, version = false;
 };
@@ -73,15 +78,25 @@ CommandLine parseCommandLine(int argc, char* argv[])
       cl.output = value(a);
     else if (a == "--set")
       cl.overrides.push_back(value(a));
+    else if (a == "--restart")
+      cl.restart = value(a);
     else if (a.rfind("--", 0) == 0)
       SC_THROW_IF(true, sc::core::InputError,
-                  "unknown option '" << a << "'. Valid options: --output, --set, --check, "
-                                     << "--quiet, --print-parameters, --help, --version.");
+                  "unknown option '" << a << "'. Valid options: --output, --set, --restart, "
+                                     << "--check, --quiet, --print-parameters, --help, --version.");
     else {
       SC_THROW_IF(!cl.input.empty(), sc::core::InputError,
                   "more than one input deck given ('" << cl.input << "' and '" << a << "').");
       cl.input = a;
     }
+  }
+  // --restart DIR writes on in DIR: it is the output directory.
+  if (!cl.restart.empty()) {
+    SC_THROW_IF(!cl.output.empty() && cl.output != cl.restart, sc::core::InputError,
+                "--restart " << cl.restart << " continues the run in '" << cl.restart
+                             << "', but --output gives '" << cl.output
+                             << "': leave --output out (a restarted run writes on in its directory).");
+    cl.output = cl.restart;
   }
   return cl;
 }
@@ -165,6 +180,8 @@ int main(int argc, char* argv[])
     const std::string deck = cl.input.empty() ? sc::app::defaultDeckPath() : cl.input;
     auto params = sc::app::readAndValidateDeck(deck, cl.overrides, cl.output);
     sc::app::Simulation simulation(comm, params, deck, cl.quiet);
+    if (!cl.restart.empty())
+      simulation.restartFrom(cl.restart);
     if (cl.check) {
       simulation.checkScene();
       if (rank == 0)

@@ -336,6 +336,88 @@ const RefinementStep& BisectionRefiner::run()
   return *step_;
 }
 
+BisectionRefiner::State BisectionRefiner::state() const
+{
+  State s;
+  s.dim = dim_;
+  s.coordinates = coords_;
+  s.elementVertices = verts_;
+  s.generations = gen_;
+  s.codes = code_;
+  boundaryEdges_.forEach([&](std::uint64_t key, int part) {
+    s.boundaryEdges.push_back(key);
+    s.boundaryEdgeParts.push_back(part);
+  });
+  boundaryFaces_.forEach([&](const FaceKey& key, int part) {
+    s.boundaryFaces.insert(s.boundaryFaces.end(), key.begin(), key.end());
+    s.boundaryFaceParts.push_back(part);
+  });
+  curvedEdges_.forEach([&](std::uint64_t key, int part) {
+    s.curvedEdges.push_back(key);
+    s.curvedEdgeParts.push_back(part);
+  });
+  return s;
+}
+
+void BisectionRefiner::restore(const State& s, const std::string& source)
+{
+  const std::size_t nv = s.coordinates.size() / (dim_ > 0 ? dim_ : 1);
+  const std::size_t ne = s.elementVertices.size() / (dim_ + 1);
+  const int parts = static_cast<int>(names_.size());
+  auto bad = [&](const std::string& why) {
+    SC_THROW_IF(true, sc::core::InputError, source << ": the refinement state is inconsistent: " << why);
+  };
+  if (s.dim != dim_)
+    bad("dimension " + std::to_string(s.dim) + ", but the mesh of the deck has dimension " + std::to_string(dim_));
+  if (s.coordinates.size() % dim_ != 0 || s.elementVertices.size() % (dim_ + 1) != 0 || ne == 0)
+    bad("coordinate or element arrays of the wrong length");
+  if (s.generations.size() != ne || (dim_ == 3 && s.codes.size() != ne) || (dim_ == 2 && !s.codes.empty()))
+    bad("per-element arrays of the wrong length");
+  for (int v : s.elementVertices)
+    if (v < 0 || static_cast<std::size_t>(v) >= nv)
+      bad("an element vertex out of range");
+  auto partsOk = [&](const std::vector<int>& p, std::size_t n) {
+    if (p.size() != n)
+      bad("boundary arrays of the wrong length");
+    for (int q : p)
+      if (q < -1 || q >= parts)
+        bad("a boundary part id out of range");
+  };
+  partsOk(s.boundaryEdgeParts, s.boundaryEdges.size());
+  partsOk(s.boundaryFaceParts, s.boundaryFaces.size() / 3);
+  partsOk(s.curvedEdgeParts, s.curvedEdges.size());
+  if (s.boundaryFaces.size() % 3 != 0)
+    bad("boundary face array of the wrong length");
+  for (std::uint64_t k : s.boundaryEdges)
+    if ((k >> 32) >= nv || (k & 0xffffffffu) >= nv)
+      bad("a boundary edge vertex out of range");
+  for (std::uint64_t k : s.curvedEdges)
+    if ((k >> 32) >= nv || (k & 0xffffffffu) >= nv)
+      bad("a curved edge vertex out of range");
+  for (int v : s.boundaryFaces)
+    if (v < 0 || static_cast<std::size_t>(v) >= nv)
+      bad("a boundary face vertex out of range");
+
+  coords_ = s.coordinates;
+  verts_ = s.elementVertices;
+  gen_ = s.generations;
+  code_ = s.codes;
+  // Lookups do not depend on the order of insertion (only buildMesh's list order does, and
+  // SimplexMesh assigns parts by key): the restored maps answer as the saved ones did.
+  boundaryEdges_ = HashIndexMap<std::uint64_t>(s.boundaryEdges.size());
+  for (std::size_t i = 0; i < s.boundaryEdges.size(); ++i)
+    boundaryEdges_.insert(s.boundaryEdges[i], s.boundaryEdgeParts[i]);
+  boundaryFaces_ = HashIndexMap<FaceKey>(s.boundaryFaceParts.size());
+  for (std::size_t i = 0; i < s.boundaryFaceParts.size(); ++i)
+    boundaryFaces_.insert({s.boundaryFaces[3 * i], s.boundaryFaces[3 * i + 1], s.boundaryFaces[3 * i + 2]},
+                          s.boundaryFaceParts[i]);
+  curvedEdges_ = HashIndexMap<std::uint64_t>(s.curvedEdges.size());
+  for (std::size_t i = 0; i < s.curvedEdges.size(); ++i)
+    curvedEdges_.insert(s.curvedEdges[i], s.curvedEdgeParts[i]);
+  history_.clear();
+  mesh_ = buildMesh();
+}
+
 Teuchos::RCP<const SimplexMesh> BisectionRefiner::buildMesh() const
 {
   std::vector<int> bfv, bpart;

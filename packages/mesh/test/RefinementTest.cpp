@@ -407,3 +407,74 @@ TEUCHOS_UNIT_TEST(Refinement, SplitBoundaryTetrahedraStayAbsent)
 }
 
 }  // namespace
+
+namespace {
+
+// Refine `reference` with random marks for `before` cycles, take its state into a refiner built
+// on the same initial mesh, then refine both alike for `after` cycles: the meshes must be
+// bit-identical (checkpoint/restart, issue #12, item 7).
+void restoredRefinerRefinesAlike(Teuchos::RCP<const Geometry> g, double h, int before, int after,
+                                 Teuchos::FancyOStream& out, bool& success)
+{
+  auto reference = makeRefiner(g, h, true);
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto marks = [&](const SimplexMesh& m) {
+    std::vector<int> marked;
+    for (int e = 0; e < m.numElements(); ++e)
+      if (u(rng) < 0.1) marked.push_back(e);
+    return marked;
+  };
+  for (int c = 0; c < before; ++c)
+    reference->refine(marks(*reference->mesh()));
+  const BisectionRefiner::State state = reference->state();
+  auto restored = makeRefiner(g, h, true);
+  restored->restore(state, "test");
+  auto same = [&](const SimplexMesh& a, const SimplexMesh& b) {
+    TEST_ASSERT(a.coordinates() == b.coordinates());
+    TEST_ASSERT(a.elementVertices() == b.elementVertices());
+    TEST_EQUALITY(a.numFaces(), b.numFaces());
+    bool sameParts = a.numFaces() == b.numFaces();
+    for (int f = 0; sameParts && f < a.numFaces(); ++f)
+      sameParts = a.faceBoundaryId(f) == b.faceBoundaryId(f);
+    TEST_ASSERT(sameParts);
+  };
+  // The restored mesh is the reference's (element order, vertices, boundary parts).
+  same(*reference->mesh(), *restored->mesh());
+  for (int c = 0; c < after; ++c) {
+    const auto marked = marks(*reference->mesh());
+    reference->refine(marked);
+    restored->refine(marked);
+    same(*reference->mesh(), *restored->mesh());
+    TEST_ASSERT(reference->state().generations == restored->state().generations);
+    TEST_ASSERT(reference->state().codes == restored->state().codes);
+  }
+  out << g->sceneName() << ": " << before << " + " << after << " cycles, "
+      << reference->mesh()->numElements() << " elements, identical after the restore\n";
+  TEST_EQUALITY(conformityProblem(*restored->mesh()), std::string());
+}
+
+}  // namespace
+
+TEUCHOS_UNIT_TEST(Refinement, RestoredStateRefinesBitIdentically)
+{
+  restoredRefinerRefinesAlike(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.2, 5, 5, out, success);
+  restoredRefinerRefinesAlike(Teuchos::rcp(new HalfBallGeometry(1.0)), 0.5, 3, 3, out, success);
+}
+
+TEUCHOS_UNIT_TEST(Refinement, InconsistentStateIsAnInputError)
+{
+  using sc::mesh::test::contains;
+  using sc::mesh::test::errorOf;
+  auto r = makeRefiner(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.3, true);
+  auto s = r->state();
+  s.elementVertices.back() = static_cast<int>(s.coordinates.size());  // no such vertex
+  TEST_ASSERT(contains(errorOf([&] { r->restore(s, "checkpoint 'x.h5'"); }),
+                       "checkpoint 'x.h5': the refinement state is inconsistent: an element vertex out of range"));
+  s = r->state();
+  s.generations.pop_back();
+  TEST_ASSERT(contains(errorOf([&] { r->restore(s, "c"); }), "per-element arrays of the wrong length"));
+  s = r->state();
+  s.dim = 3;
+  TEST_ASSERT(contains(errorOf([&] { r->restore(s, "c"); }), "dimension 3"));
+}

@@ -81,7 +81,7 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
     static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
     return std::regex_replace(text, special, R"(\$&)");
   };
-  std::string alternatives = "summary\\.json|contact_cycle[0-9]+\\.csv";
+  std::string alternatives = "summary\\.json|checkpoint\\.h5|contact_cycle[0-9]+\\.csv";
   for (const auto& b : bases)
     alternatives += "|" + quote(b) + "\\.xdmf|" + quote(b) + "_c[0-9]+\\.h5";
   const std::regex ours("(" + alternatives + ")(\\.tmp\\.[0-9]+)?");
@@ -118,6 +118,61 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
   std::vector<std::string> removed;
   runOnRoot(comm, [&] { removed = removeEarlierRunFiles(directory, baseName); });
   // Every rank learns how many (the names matter only to rank 0's progress line).
+  int count = static_cast<int>(removed.size());
+  Teuchos::broadcast(comm, 0, &count);
+  if (comm.getRank() != 0)
+    removed.assign(static_cast<std::size_t>(count), std::string());
+  return removed;
+}
+
+std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
+                                               const std::string& baseName, int lastCycle)
+{
+  namespace fs = std::filesystem;
+  auto quote = [](const std::string& text) {
+    static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
+    return std::regex_replace(text, special, R"(\$&)");
+  };
+  // A cycle's file (group 1: its cycle, group 2: a temporary suffix), or another temporary.
+  const std::regex fields(quote(baseName) + "_c([0-9]+)\\.h5(\\.tmp\\.[0-9]+)?");
+  const std::regex csv("contact_cycle([0-9]+)\\.csv(\\.tmp\\.[0-9]+)?");
+  const std::regex temporary("(summary\\.json|checkpoint\\.h5|" + quote(baseName) +
+                             "\\.xdmf)\\.tmp\\.[0-9]+");
+  std::vector<std::string> removed;
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(directory, ec)) {
+    std::error_code tec;
+    if (entry.is_directory(tec))
+      continue;
+    const std::string name = entry.path().filename().string();
+    std::smatch m;
+    if (std::regex_match(name, m, fields) || std::regex_match(name, m, csv)) {
+      if (m[2].matched || m[1].length() > 9 || std::stol(m[1].str()) > lastCycle)
+        stale.push_back(entry.path());
+    } else if (std::regex_match(name, temporary)) {
+      stale.push_back(entry.path());
+    }
+  }
+  SC_THROW_IF(ec, sc::core::InputError,
+              "Cannot list the output directory '" << directory << "' (--restart): " << ec.message());
+  for (const auto& path : stale) {
+    fs::remove(path, ec);
+    SC_THROW_IF(ec, sc::core::InputError,
+                "Cannot remove '" << path.string() << "', written by the restarted run after its "
+                                  << "last checkpoint: " << ec.message());
+    removed.push_back(path.filename().string());
+  }
+  std::sort(removed.begin(), removed.end());
+  return removed;
+}
+
+std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
+                                               const std::string& baseName, int lastCycle,
+                                               const Teuchos::Comm<int>& comm)
+{
+  std::vector<std::string> removed;
+  runOnRoot(comm, [&] { removed = removeFilesAfterCycle(directory, baseName, lastCycle); });
   int count = static_cast<int>(removed.size());
   Teuchos::broadcast(comm, 0, &count);
   if (comm.getRank() != 0)

@@ -19,7 +19,8 @@ void createOutputDirectory(const std::string& directory, const Teuchos::Comm<int
 
 /// A run owns its output directory (docs/output.md "An earlier run's files"): remove from
 /// \p directory the files that a StressContact run writes there: summary.json,
-/// `<base>.xdmf`, `<base>_c<NNNN>.h5`, contact_cycle<N>.csv and leftover `<one of these>.tmp.<pid>`,
+/// `<base>.xdmf`, `<base>_c<NNNN>.h5`, contact_cycle<N>.csv, checkpoint.h5 and leftover
+/// `<one of these>.tmp.<pid>`,
 /// for \p baseName and for the Output/Base name recorded in an earlier summary.json. Other files
 /// are left alone. Returns the names removed (sorted); throws sc::core::InputError if one cannot
 /// be removed.
@@ -29,6 +30,19 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
 /// Collective version: rank 0 removes, every rank gets the list (or the same error).
 std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
                                                const std::string& baseName,
+                                               const Teuchos::Comm<int>& comm);
+
+/// `--restart` (issue #12, item 7): the restarted run continues the files of the run it
+/// restarts, whose last complete cycle is \p lastCycle. Remove what that run wrote after it (the
+/// `<base>_c<NNNN>.h5` and contact_cycle<N>.csv of cycles N > lastCycle, written by a cycle that
+/// was killed) and every leftover temporary `<one of the run's files>.tmp.<pid>`; keep the rest.
+/// Returns the names removed (sorted); throws sc::core::InputError if one cannot be removed.
+std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
+                                               const std::string& baseName, int lastCycle);
+
+/// Collective version: rank 0 removes, every rank gets the list (or the same error).
+std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
+                                               const std::string& baseName, int lastCycle,
                                                const Teuchos::Comm<int>& comm);
 
 /// Is there room for a file of about \p bytes at \p path (in \p directory)? Checks the free space

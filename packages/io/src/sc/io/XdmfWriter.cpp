@@ -624,6 +624,14 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
   });
 }
 
+void XdmfWriter::restoreSteps(const std::vector<Step>& steps)
+{
+  runOnRoot(*comm_, [&] {
+    steps_ = steps;
+    rewriteXdmf();
+  });
+}
+
 void XdmfWriter::rewriteXdmf() const
 {
   std::ostringstream x;

@@ -64,13 +64,21 @@ public:
   /// File name only (as referenced from the .xdmf): <baseName>_c<NNNN>.h5
   std::string h5FileName(int cycle) const;
 
-private:
+  /// One step of the time series as the .xdmf lists it.
   struct Step {
     int cycle;
     double time;
     std::string xml;  // the step's <Grid CollectionType="Spatial"> element
   };
+  /// The steps written so far (rank 0's list; empty on other ranks). A restarted run keeps them
+  /// in its checkpoint (issue #12, item 7).
+  const std::vector<Step>& steps() const { return steps_; }
+  /// Collective: replace the list of steps by \p steps (rank 0's are used) and rewrite the
+  /// .xdmf atomically: a restarted run continues the time series of the run it restarts, and
+  /// a step written by that run after its last checkpoint is dropped.
+  void restoreSteps(const std::vector<Step>& steps);
 
+private:
   void rewriteXdmf() const;
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

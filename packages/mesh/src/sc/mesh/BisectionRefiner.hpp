@@ -61,6 +61,29 @@ public:
   /// Bisection generation of element e of mesh() (0 for initial elements).
   int generation(int e) const { return gen_[e]; }
 
+  /// Everything the refiner carries from one call to the next: with it, a refiner built on the
+  /// same initial mesh and geometry refines exactly (bit for bit) as the one it was taken from
+  /// (checkpoint/restart, issue #12, item 7). Boundary maps as (key, part) lists, part -1 for a
+  /// face that was split.
+  struct State {
+    int dim = 0;
+    std::vector<double> coordinates;     ///< dim per vertex
+    std::vector<int> elementVertices;    ///< dim+1 per element, in refinement order
+    std::vector<int> generations;        ///< per element
+    std::vector<unsigned char> codes;    ///< 3D: face markings and flag, per element
+    std::vector<std::uint64_t> boundaryEdges;  ///< 2D: edge keys
+    std::vector<int> boundaryEdgeParts;
+    std::vector<int> boundaryFaces;      ///< 3D: 3 sorted vertices per face
+    std::vector<int> boundaryFaceParts;
+    std::vector<std::uint64_t> curvedEdges;  ///< 3D: edges of curved boundary faces
+    std::vector<int> curvedEdgeParts;
+  };
+  State state() const;
+  /// Replace the refinement state by \p state (taken by state() from a refiner on the same
+  /// initial mesh, geometry and boundary parts) and rebuild mesh(); the history is cleared.
+  /// Throws sc::core::InputError, quoting \p source, if the state is inconsistent.
+  void restore(const State& state, const std::string& source);
+
 private:
   const RefinementStep& run();
   bool needsBisection(int e) const;

@@ -1,0 +1,304 @@
+// Checkpoint/restart of adaptive runs (issue #12, item 7; docs/adaptivity.md "Checkpoint and
+// restart"). After every complete cycle N the run writes <output>/checkpoint.h5 (atomically):
+// the mesh of cycle N with the refiner's bisection state, the elements marked for cycle N+1, the
+// contact points of cycle N (the next cycle's start), the summary's cycle records, the XDMF
+// steps, and the run's parameters. `--restart DIR` reads it, checks the parameters, and goes on
+// with cycle N+1, which then refines, solves and writes as the uninterrupted run would have.
+#include "Simulation.hpp"
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/ContactSummary.hpp>
+#include <sc/core/Error.hpp>
+#include <sc/io/CheckpointFile.hpp>
+#include <sc/io/Collective.hpp>
+#include <sc/io/ParameterListJson.hpp>
+#include <sc/io/RunSummary.hpp>
+#include <sc/io/XdmfWriter.hpp>
+#include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+
+#include "DeckParameters.hpp"
+
+namespace sc::app {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Bumped when the content changes meaning; a checkpoint of another version is refused.
+constexpr long long kCheckpointVersion = 1;
+
+std::string checkpointPath(const std::string& directory)
+{
+  return (std::filesystem::path(directory) / "checkpoint.h5").string();
+}
+
+void flatten(const Json& j, const std::string& prefix, std::map<std::string, std::string>& out)
+{
+  if (j.is_object() && !j.empty()) {
+    for (const auto& item : j.items())
+      flatten(item.value(), prefix.empty() ? item.key() : prefix + "/" + item.key(), out);
+  } else {
+    out[prefix] = j.dump();
+  }
+}
+
+// The parameters in which two runs differ, "" if none. Output/Directory may differ (the run is
+// restarted in the directory it wrote, however that was named).
+std::string parameterDifferences(const Json& saved, const Json& current)
+{
+  std::map<std::string, std::string> a, b;
+  flatten(saved, "", a);
+  flatten(current, "", b);
+  a.erase("Output/Directory");
+  b.erase("Output/Directory");
+  std::ostringstream os;
+  int count = 0;
+  auto note = [&](const std::string& key, const std::string& there, const std::string& here) {
+    if (count++ < 8)
+      os << (count > 1 ? "; " : "") << "'" << key << "' is " << there << " in the checkpoint and "
+         << here << " in this run";
+  };
+  for (const auto& [key, value] : a) {
+    auto it = b.find(key);
+    if (it == b.end())
+      note(key, value, "absent");
+    else if (it->second != value)
+      note(key, value, it->second);
+  }
+  for (const auto& [key, value] : b)
+    if (!a.count(key))
+      note(key, "absent", value);
+  if (count > 8)
+    os << "; and " << (count - 8) << " more";
+  return os.str();
+}
+
+template <class T>
+std::vector<T> narrow(const std::vector<long long>& v)
+{
+  return std::vector<T>(v.begin(), v.end());
+}
+
+}  // namespace
+
+void Simulation::writeCheckpoint(int cycle)
+{
+  // Not timed: it is written after the cycle's timings are recorded (it is small: 0.3 MB at
+  // 54k DOFs in 2D, docs/output.md).
+  // The contact points of this cycle, every rank's in rank order: on restart rank 0 holds them
+  // all, so that ActiveSetSolver::setInitialState gathers the same list whatever the rank count.
+  const int d = problem_.dimension;
+  std::vector<double> mine;
+  for (const auto& p : previousPoints_) {
+    mine.insert(mine.end(), p.x.begin(), p.x.begin() + d);
+    mine.push_back(static_cast<double>(p.status));
+    mine.push_back(p.direction[0]);
+    mine.push_back(p.direction[1]);
+  }
+  std::vector<double> points = contact::gatherAllVariable(mine, *comm_);
+
+  io::runOnRoot(*comm_, [&] {
+    io::CheckpointFile cp;
+    cp.setInts("checkpoint_version", {kCheckpointVersion});
+    cp.setString("code_version", versionString());
+    cp.setString("deck", deckPath_);
+    cp.setString("parameters", io::toJson(*params_).dump());
+    cp.setInts("ranks", {comm_->getSize()});
+    cp.setInts("cycle", {cycle});
+
+    const auto s = refiner_->state();
+    cp.setInts("mesh_dimension", {s.dim});
+    cp.setInts("mesh_elements", {mesh_->numElements()});
+    cp.setInts("mesh_vertices", {mesh_->numVertices()});
+    cp.setString("mesh_boundary_names", Json(mesh_->boundaryNames()).dump());
+    cp.setDoubles("mesh_coordinates", s.coordinates);
+    cp.setInts("mesh_element_vertices", {s.elementVertices.begin(), s.elementVertices.end()});
+    cp.setInts("mesh_generations", {s.generations.begin(), s.generations.end()});
+    cp.setInts("mesh_codes", {s.codes.begin(), s.codes.end()});
+    cp.setInts("mesh_boundary_edges", {s.boundaryEdges.begin(), s.boundaryEdges.end()});
+    cp.setInts("mesh_boundary_edge_parts", {s.boundaryEdgeParts.begin(), s.boundaryEdgeParts.end()});
+    cp.setInts("mesh_boundary_faces", {s.boundaryFaces.begin(), s.boundaryFaces.end()});
+    cp.setInts("mesh_boundary_face_parts", {s.boundaryFaceParts.begin(), s.boundaryFaceParts.end()});
+    cp.setInts("mesh_curved_edges", {s.curvedEdges.begin(), s.curvedEdges.end()});
+    cp.setInts("mesh_curved_edge_parts", {s.curvedEdgeParts.begin(), s.curvedEdgeParts.end()});
+
+    cp.setInts("marked_elements", {marked_.begin(), marked_.end()});
+    cp.setInts("contact_point_stride", {d + 3});
+    cp.setDoubles("contact_points", std::move(points));
+
+    cp.setString("summary_cycles", summary_->json()["cycles"].dump());
+    Json steps = Json::array();
+    if (writer_)
+      for (const auto& st : writer_->steps())
+        steps.push_back({{"cycle", st.cycle}, {"time", st.time}, {"xml", st.xml}});
+    cp.setString("xdmf_steps", steps.dump());
+    cp.write(checkpointPath(output_.directory));
+  });
+}
+
+int Simulation::readCheckpoint()
+{
+  const std::string path = checkpointPath(restartDirectory_);
+  // Every rank reads the file (read-only): the data are global.
+  checkpoint_ = std::make_unique<io::CheckpointFile>(io::CheckpointFile::read(path));
+  const io::CheckpointFile& cp = *checkpoint_;
+  auto bad = [&](const std::string& why) {
+    SC_THROW_IF(true, core::InputError, "the checkpoint '" << path << "' " << why);
+  };
+  auto scalar = [&](const std::string& name) {
+    const auto& v = cp.ints(name);
+    if (v.size() != 1)
+      bad("has a dataset '" + name + "' that is not a single number (damaged)");
+    return v[0];
+  };
+  if (scalar("checkpoint_version") != kCheckpointVersion)
+    bad("has version " + std::to_string(scalar("checkpoint_version")) + "; this build reads version " +
+        std::to_string(kCheckpointVersion));
+  if (cp.string("code_version") != versionString())
+    bad("was written by StressContact " + cp.string("code_version") + ", this is " + versionString() +
+        ": restart with the version that wrote it, or run the deck again");
+
+  Json saved;
+  try {
+    saved = Json::parse(cp.string("parameters"));
+  } catch (const std::exception&) {
+    bad("has parameters that are not valid JSON (damaged)");
+  }
+  const std::string diff = parameterDifferences(saved, io::toJson(*params_));
+  if (!diff.empty())
+    bad("belongs to a run with other parameters: " + diff + ". A restart takes the deck and the " +
+        "--set options of the run it continues (only the output directory may differ).");
+
+  const int cycle = static_cast<int>(scalar("cycle"));
+  const int ranksBefore = static_cast<int>(scalar("ranks"));
+  if (cycle < 0)
+    bad("has a negative cycle (damaged)");
+
+  // The mesh of that cycle, with the state the refiner needs to go on exactly as before.
+  mesh::BisectionRefiner::State s;
+  s.dim = static_cast<int>(scalar("mesh_dimension"));
+  s.coordinates = cp.doubles("mesh_coordinates");
+  s.elementVertices = narrow<int>(cp.ints("mesh_element_vertices"));
+  s.generations = narrow<int>(cp.ints("mesh_generations"));
+  s.codes = narrow<unsigned char>(cp.ints("mesh_codes"));
+  s.boundaryEdges = narrow<std::uint64_t>(cp.ints("mesh_boundary_edges"));
+  s.boundaryEdgeParts = narrow<int>(cp.ints("mesh_boundary_edge_parts"));
+  s.boundaryFaces = narrow<int>(cp.ints("mesh_boundary_faces"));
+  s.boundaryFaceParts = narrow<int>(cp.ints("mesh_boundary_face_parts"));
+  s.curvedEdges = narrow<std::uint64_t>(cp.ints("mesh_curved_edges"));
+  s.curvedEdgeParts = narrow<int>(cp.ints("mesh_curved_edge_parts"));
+  // The part ids of the state refer to the initial mesh's boundary names (a Gmsh file changed
+  // since the run was started could number them otherwise).
+  const std::string names = Json(mesh_->boundaryNames()).dump();
+  if (cp.string("mesh_boundary_names") != names)
+    bad("has the boundary parts " + cp.string("mesh_boundary_names") + ", the deck's initial mesh " +
+        names + " (was the mesh file changed?)");
+  refiner_->restore(s, "checkpoint '" + path + "'");
+  mesh_ = refiner_->mesh();
+  if (mesh_->numElements() != scalar("mesh_elements") || mesh_->numVertices() != scalar("mesh_vertices"))
+    bad("holds a mesh that does not rebuild to its recorded size (damaged)");
+
+  marked_ = narrow<int>(cp.ints("marked_elements"));
+  for (int e : marked_)
+    if (e < 0 || e >= mesh_->numElements())
+      bad("marks an element that its mesh does not have (damaged)");
+
+  const int d = problem_.dimension;
+  const auto& points = cp.doubles("contact_points");
+  if (scalar("contact_point_stride") != d + 3 || points.size() % (d + 3) != 0)
+    bad("has contact points of another dimension (damaged)");
+  previousPoints_.clear();
+  if (comm_->getRank() == 0)
+    for (std::size_t k = 0; k < points.size(); k += d + 3) {
+      contact::ContactPoint p;
+      for (int i = 0; i < d; ++i)
+        p.x[i] = points[k + i];
+      p.status = static_cast<contact::PointStatus>(static_cast<int>(points[k + d]));
+      p.direction = {points[k + d + 1], points[k + d + 2]};
+      previousPoints_.push_back(p);
+    }
+
+  Json cycles, steps;
+  try {
+    cycles = Json::parse(cp.string("summary_cycles"));
+    steps = Json::parse(cp.string("xdmf_steps"));
+  } catch (const std::exception&) {
+    bad("has summary or XDMF records that are not valid JSON (damaged)");
+  }
+  if (!steps.is_array())
+    bad("has XDMF records that are not a list (damaged)");
+  if (!cycles.is_array() || static_cast<int>(cycles.size()) != cycle + 1 ||
+      cycles.back().value("cycle", -1) != cycle)
+    bad("does not hold the summary records of cycles 0 to " + std::to_string(cycle) + " (damaged)");
+  // summary.json counts the linear solver's symbolic reuses and preconditioner set-ups over the
+  // run: the restarted run's solver starts from zero.
+  const Json& last = cycles.back();
+  auto count = [&](const char* key) -> long long {
+    if (last.contains("linear_solver") && last["linear_solver"].is_object() &&
+        last["linear_solver"].contains(key) && last["linear_solver"][key].is_number_integer())
+      return last["linear_solver"][key].get<long long>();
+    return 0;
+  };
+  symbolicReusesBefore_ = count("symbolic_reuses");
+  preconditionerSetupsBefore_ = count("preconditioner_setups");
+
+  std::ostringstream os;
+  os << "restart from " << path << ": cycle " << cycle << " complete (" << mesh_->numElements()
+     << " elements, " << marked_.size() << " marked), continuing with cycle " << cycle + 1;
+  if (ranksBefore != comm_->getSize())
+    os << "; written on " << ranksBefore << " rank(s), now " << comm_->getSize()
+       << ": the cycles after it match a run on " << comm_->getSize()
+       << " rank(s) only to rounding (the partition changes)";
+  progress_.message(os.str());
+  return cycle + 1;
+}
+
+void Simulation::restoreOutputs()
+{
+  const io::CheckpointFile& cp = *checkpoint_;
+  Json cycles = Json::parse(cp.string("summary_cycles"));
+  const int cycle = static_cast<int>(cp.ints("cycle")[0]);
+  summary_->json()["cycles"] = std::move(cycles);
+  summary_->json()["restart"] = {{"checkpoint_cycle", cycle},
+                                 {"ranks_before", cp.ints("ranks")[0]}};
+  if (writer_) {
+    std::vector<io::XdmfWriter::Step> steps;
+    for (const auto& s : Json::parse(cp.string("xdmf_steps")))
+      steps.push_back({s.at("cycle").get<int>(), s.at("time").get<double>(), s.at("xml").get<std::string>()});
+    writer_->restoreSteps(steps);
+  }
+  checkpoint_.reset();
+}
+
+void Simulation::killIfAsked(int cycle) const
+{
+  // Test only (docs/reliability.md): simulates a run killed during a cycle, after the cycle's
+  // fields and CSV are written but before its summary record and checkpoint.
+  const char* value = std::getenv("SC_KILL_IN_CYCLE");
+  if (!value || std::string(value).empty())
+    return;
+  char* end = nullptr;
+  const long k = std::strtol(value, &end, 10);
+  if (*end != '\0' || k != cycle)
+    return;
+  comm_->barrier();
+  if (comm_->getRank() == 0)
+    std::cerr << "stresscontact: SC_KILL_IN_CYCLE=" << k << ": killing the run in cycle " << cycle
+              << " (test only)" << std::endl;
+  comm_->barrier();
+  std::raise(SIGKILL);
+}
+
+}  // namespace sc::app

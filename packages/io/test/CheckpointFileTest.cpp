@@ -1,0 +1,104 @@
+// CheckpointFile (issue #12, item 7): round trip, atomic replacement, errors naming the file;
+// removeFilesAfterCycle.
+#include <sc/io/CheckpointFile.hpp>
+#include <sc/io/OutputDirectory.hpp>
+
+#include "TestDirectory.hpp"
+
+#include <sc/core/Error.hpp>
+
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+
+namespace {
+
+using sc::io::test::freshDirectory;
+using sc::io::test::temporaries;
+
+bool contains(const std::string& text, const std::string& what)
+{
+  return text.find(what) != std::string::npos;
+}
+
+std::string inputErrorOf(const std::function<void()>& f)
+{
+  try {
+    f();
+  } catch (const sc::core::InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+TEUCHOS_UNIT_TEST(CheckpointFile, RoundTripIsExactAndReplacesAtomically)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string dir = freshDirectory(*comm, "checkpoint");
+  if (comm->getRank() != 0)
+    return;
+  const std::string path = dir + "/checkpoint.h5";
+  sc::io::CheckpointFile cp;
+  const std::vector<double> x = {0.1, -1e-300, std::numeric_limits<double>::max(), 1.0 / 3.0};
+  const std::vector<long long> n = {0, -1, (1LL << 62) + 7};
+  cp.setDoubles("x", x);
+  cp.setInts("n", n);
+  cp.setInts("empty", {});
+  cp.setString("s", std::string("{\"a\": \"\xc3\xa9\"}\0z", 15));
+  cp.write(path);
+  auto back = sc::io::CheckpointFile::read(path);
+  TEST_ASSERT(back.doubles("x") == x);
+  TEST_ASSERT(back.ints("n") == n);
+  TEST_EQUALITY(back.ints("empty").size(), 0u);
+  TEST_EQUALITY(back.string("s"), std::string("{\"a\": \"\xc3\xa9\"}\0z", 15));
+  TEST_ASSERT(contains(inputErrorOf([&] { back.ints("x"); }),
+                                     "the checkpoint '" + path + "' has no integer dataset 'x'"));
+  // Written again: replaced, no temporary left.
+  cp.setInts("n", {5});
+  cp.write(path);
+  TEST_EQUALITY(sc::io::CheckpointFile::read(path).ints("n").at(0), 5);
+  TEST_EQUALITY(temporaries(dir).size(), 0u);
+}
+
+TEUCHOS_UNIT_TEST(CheckpointFile, MissingOrForeignFilesAreNamed)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string dir = freshDirectory(*comm, "checkpoint_errors");
+  if (comm->getRank() != 0)
+    return;
+  TEST_ASSERT(contains(inputErrorOf([&] { sc::io::CheckpointFile::read(dir + "/none.h5"); }),
+                       "no checkpoint '" + dir + "/none.h5'"));
+  std::ofstream(dir + "/text.h5") << "hello\n";
+  TEST_ASSERT(contains(inputErrorOf([&] { sc::io::CheckpointFile::read(dir + "/text.h5"); }),
+                       "the checkpoint '" + dir + "/text.h5' cannot be read: not an HDF5 file"));
+}
+
+TEUCHOS_UNIT_TEST(OutputDirectory, RestartRemovesTheFilesOfLaterCycles)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string dir = freshDirectory(*comm, "restart_cleanup");
+  if (comm->getRank() == 0)
+    for (const char* f : {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
+                          "sol_c0003.h5", "sol_c0012.h5", "contact_cycle2.csv", "contact_cycle3.csv",
+                          "contact_cycle10.csv", "sol_c0001.h5.tmp.77", "checkpoint.h5.tmp.5",
+                          "notes.txt", "other_c0009.h5"})
+      std::ofstream(dir + "/" + f) << "x";
+  comm->barrier();
+  const auto removed = sc::io::removeFilesAfterCycle(dir, "sol", 2, *comm);
+  TEST_EQUALITY(removed.size(), 6u);
+  if (comm->getRank() != 0)
+    return;
+  const std::vector<std::string> expected = {"checkpoint.h5.tmp.5", "contact_cycle10.csv",
+                                             "contact_cycle3.csv", "sol_c0001.h5.tmp.77",
+                                             "sol_c0003.h5", "sol_c0012.h5"};
+  TEST_ASSERT(removed == expected);
+  for (const char* f : {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
+                        "contact_cycle2.csv", "notes.txt", "other_c0009.h5"})
+    TEST_ASSERT(std::filesystem::exists(dir + "/" + f));
+}
+
+}  // namespace

@@ -1,0 +1,172 @@
+# cmake -DAPP=stresscontact -DCOMPARE=compare_summaries -DMPIEXEC=mpiexec -DMPIFLAGS="a|b" -DNP=2
+#       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 [-DRTOL=1e-12]
+#       [-DIGNORE="key|..."] [-DSAME_FILES=ON] [-DRESTART_NP=1] -P Restart.cmake
+# Checkpoint/restart of an adaptive run (issue #12, item 7; docs/adaptivity.md):
+#   1. the deck uninterrupted into OUT/full;
+#   2. the same run killed (SIGKILL, SC_KILL_IN_CYCLE) in cycle KILL_CYCLE, after that cycle's
+#      fields and CSV were written and before its summary record and checkpoint, into OUT/killed;
+#   3. `--restart OUT/killed`: it continues from the checkpoint of cycle KILL_CYCLE − 1.
+# With RESTART_NP the restart (and the uninterrupted reference run) use RESTART_NP ranks, the
+# killed run NP.
+# Then every per-cycle number of summary.json must agree with the uninterrupted run within RTOL
+# (compare_summaries), the XDMF series must list every cycle once, every cycle's .h5 and CSV must
+# be there and no temporary left; with SAME_FILES the CSVs and the .xdmf must be byte-identical.
+# Finally the comparison is shown able to fail: one number changed by 1e-10 (relative) in a copy
+# of the restarted summary must be reported.
+foreach(v SETS MPIFLAGS IGNORE)
+  string(REPLACE "|" ";" ${v} "${${v}}")
+endforeach()
+if(NOT RTOL)
+  set(RTOL 1e-12)
+endif()
+if(NOT RESTART_NP)
+  set(RESTART_NP ${NP})
+endif()
+file(REMOVE_RECURSE "${OUT}")
+set(launch ${MPIEXEC} -n ${NP} ${MPIFLAGS} ${APP} ${DECK} --quiet)
+set(relaunch ${MPIEXEC} -n ${RESTART_NP} ${MPIFLAGS} ${APP} ${DECK} --quiet)
+set(sets)
+foreach(s IN LISTS SETS)
+  list(APPEND sets --set "${s}")
+endforeach()
+
+execute_process(COMMAND ${relaunch} --output ${OUT}/full ${sets} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the uninterrupted run failed with status ${rc}")
+endif()
+
+execute_process(COMMAND ${CMAKE_COMMAND} -E env SC_KILL_IN_CYCLE=${KILL_CYCLE} ${launch}
+                        --output ${OUT}/killed ${sets}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("killed run: status '${rc}'\n${err}")
+if(rc EQUAL 0)
+  message(FATAL_ERROR "the run to be killed in cycle ${KILL_CYCLE} exited normally")
+endif()
+# What the kill left: the killed cycle's fields and CSV, a summary and a checkpoint of the cycles
+# before it.
+math(EXPR last "${KILL_CYCLE} - 1")
+string(LENGTH "000${KILL_CYCLE}" len)
+math(EXPR from "${len} - 4")
+string(SUBSTRING "000${KILL_CYCLE}" ${from} 4 killedH5)
+foreach(f checkpoint.h5 summary.json solution_c${killedH5}.h5 contact_cycle${KILL_CYCLE}.csv)
+  if(NOT EXISTS "${OUT}/killed/${f}")
+    message(FATAL_ERROR "the killed run did not leave ${f}")
+  endif()
+endforeach()
+file(READ "${OUT}/killed/summary.json" killedSummary)
+string(JSON killedCycles LENGTH "${killedSummary}" cycles)
+if(NOT killedCycles EQUAL KILL_CYCLE)
+  message(FATAL_ERROR "the killed run's summary has ${killedCycles} cycles, expected ${KILL_CYCLE}")
+endif()
+
+execute_process(COMMAND ${relaunch} --restart ${OUT}/killed ${sets}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("restart: status ${rc}\n${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the restarted run failed with status ${rc}")
+endif()
+
+file(READ "${OUT}/full/summary.json" fullSummary)
+string(JSON cycles LENGTH "${fullSummary}" cycles)
+math(EXPR lastCycle "${cycles} - 1")
+file(GLOB leftovers "${OUT}/killed/*.tmp*")
+if(leftovers)
+  message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+endif()
+file(READ "${OUT}/killed/solution.xdmf" xdmf)
+foreach(c RANGE ${lastCycle})
+  string(LENGTH "000${c}" len)
+  math(EXPR from "${len} - 4")
+  string(SUBSTRING "000${c}" ${from} 4 c4)
+  foreach(f solution_c${c4}.h5 contact_cycle${c}.csv)
+    if(NOT EXISTS "${OUT}/killed/${f}")
+      message(FATAL_ERROR "the restarted run's directory misses ${f}")
+    endif()
+  endforeach()
+  string(REGEX MATCHALL "<Time Value=\"${c}\"/>" steps "${xdmf}")
+  list(LENGTH steps n)
+  if(NOT n EQUAL 1)
+    message(FATAL_ERROR "solution.xdmf lists cycle ${c} ${n} times, expected once")
+  endif()
+  if(SAME_FILES)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/full/contact_cycle${c}.csv
+                            ${OUT}/killed/contact_cycle${c}.csv RESULT_VARIABLE same)
+    if(NOT same EQUAL 0)
+      message(FATAL_ERROR "contact_cycle${c}.csv differs from the uninterrupted run's")
+    endif()
+  endif()
+endforeach()
+if(SAME_FILES)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/full/solution.xdmf
+                          ${OUT}/killed/solution.xdmf RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "solution.xdmf differs from the uninterrupted run's")
+  endif()
+endif()
+
+set(ignores)
+foreach(k IN LISTS IGNORE)
+  list(APPEND ignores --ignore ${k})
+endforeach()
+execute_process(COMMAND ${COMPARE} ${OUT}/full/summary.json ${OUT}/killed/summary.json
+                        --rtol ${RTOL} ${ignores} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the restarted run's summary differs from the uninterrupted run's")
+endif()
+file(READ "${OUT}/killed/summary.json" restarted)
+string(JSON restartCycle GET "${restarted}" restart checkpoint_cycle)
+if(NOT restartCycle EQUAL last)
+  message(FATAL_ERROR "summary.json says restart from cycle ${restartCycle}, expected ${last}")
+endif()
+
+# The check can fail: η of the first restarted cycle with its (N−1)th significant digit changed
+# for RTOL = 1e-N (a relative change of 10^(1−N) to 10^(2−N), above RTOL) must be reported, and
+# so must one DOF more.
+if(NOT RTOL MATCHES "^1e-([0-9]+)$")
+  message(FATAL_ERROR "RTOL must be 1e-N, not ${RTOL}")
+endif()
+math(EXPR digit "${CMAKE_MATCH_1} - 1")
+string(JSON eta GET "${restarted}" cycles ${KILL_CYCLE} eta total)
+string(REGEX MATCH "^[-0.]*" lead "${eta}")
+string(LENGTH "${lead}" pos)
+set(significant 0)
+string(LENGTH "${eta}" etaLength)
+while(pos LESS etaLength)
+  string(SUBSTRING "${eta}" ${pos} 1 ch)
+  if(ch MATCHES "[0-9]")
+    math(EXPR significant "${significant} + 1")
+    if(significant EQUAL digit)
+      break()
+    endif()
+  elseif(NOT ch STREQUAL ".")
+    break()
+  endif()
+  math(EXPR pos "${pos} + 1")
+endwhile()
+if(NOT significant EQUAL digit)
+  message(FATAL_ERROR "cannot perturb eta/total = ${eta} (fewer than ${digit} significant digits)")
+endif()
+if(ch STREQUAL "9")
+  set(ch 8)
+else()
+  math(EXPR ch "${ch} + 1")
+endif()
+string(SUBSTRING "${eta}" 0 ${pos} head)
+math(EXPR pos "${pos} + 1")
+string(SUBSTRING "${eta}" ${pos} -1 tail)
+set(perturbed "${head}${ch}${tail}")
+string(JSON dofs GET "${restarted}" cycles ${KILL_CYCLE} dofs total)
+math(EXPR dofs "${dofs} + 1")
+foreach(change "eta;total;${perturbed}" "dofs;total;${dofs}")
+  list(GET change 0 group)
+  list(GET change 1 key)
+  list(GET change 2 value)
+  string(JSON broken SET "${restarted}" cycles ${KILL_CYCLE} ${group} ${key} "${value}")
+  file(WRITE "${OUT}/perturbed_summary.json" "${broken}")
+  execute_process(COMMAND ${COMPARE} ${OUT}/full/summary.json ${OUT}/perturbed_summary.json
+                          --rtol ${RTOL} ${ignores} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+  message("with ${group}/${key} = ${value} in cycle ${KILL_CYCLE}:\n${out}")
+  if(NOT rc EQUAL 1)
+    message(FATAL_ERROR "compare_summaries did not report the changed ${group}/${key} (status ${rc})")
+  endif()
+endforeach()
