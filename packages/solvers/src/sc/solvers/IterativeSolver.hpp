@@ -10,10 +10,11 @@
 // inverted); the θ block is diag(2μ M_θ). S_σ⁻¹ is applied by the "Stress block" sub-solver:
 //   - MUMPS or KLU2: exact (robust in h and λ; the cost of a direct solve of the σ block, which
 //     is SPD and smaller than the saddle-point system);
+//   - Multigrid: one symmetric V(1,1) cycle of geometric multigrid on the nested hierarchy of
+//     BlockStructure::multigrid (Galerkin coarse operators, additive vertex-patch Schwarz
+//     smoother, direct coarsest solve), DESIGN §6. 2D only;
 //   - MueLu: smoothed-aggregation AMG, one V-cycle. Not robust (the kernel of div): offered to
 //     measure that, docs/solvers.md.
-// Geometric multigrid with vertex-patch smoothers (DESIGN §6) is the scalable S_σ⁻¹ still to come
-// (issue #10).
 //
 // Convergence: Belos stops at `Tolerance` on its own residual (MINRES: the preconditioned one);
 // the true relative residual ‖b − A x‖/‖b‖ of the working system is then checked, and Belos is

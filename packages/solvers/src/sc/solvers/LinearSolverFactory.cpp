@@ -127,8 +127,11 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                   "Solver of the stress block S_σ = A + (2μ)⁻¹B_uᵀM_u⁻¹B_u of the block-diagonal "
                   "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (DESIGN §6): MUMPS or KLU2 (exact: "
                   "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
-                  "block), or MueLu (smoothed aggregation AMG, one V-cycle: not robust, the kernel "
-                  "of div; offered for comparison). SuperLU is not in Debian's Trilinos.");
+                  "block); Multigrid (one geometric V-cycle with vertex-patch smoothers on the "
+                  "nested hierarchy; 2D, C++ API only: the application does not keep the "
+                  "hierarchy yet); or MueLu (smoothed aggregation AMG, one V-cycle: not robust, "
+                  "the kernel of div; offered for comparison). SuperLU is not in Debian's "
+                  "Trilinos.");
     auto& mp = pl->sublist("MUMPS", false, "Options of the MUMPS solver (used when Type = MUMPS, or as the Iterative stress block).");
     declareInt(mp, "Memory relaxation percent", 30,
                "ICNTL(14): workspace added to the analysis estimate, in percent. Pivoting in "
