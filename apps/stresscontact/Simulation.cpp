@@ -71,6 +71,18 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                 "Linear Solver/Iterative/Stress block = Multigrid is not available in the "
                 "application yet (it needs the nested mesh hierarchy, which only the C++ API "
                 "provides: solvers::BlockStructure::multigrid, docs/solvers.md); use MUMPS or KLU2");
+    // MINRES needs a symmetric system: contact rows make it non-symmetric (DESIGN §3), and
+    // Symmetric = false declines to exploit symmetry.
+    const bool minres = ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative" &&
+                        ls.isSublist("Iterative") && ls.sublist("Iterative").isParameter("Method") &&
+                        ls.sublist("Iterative").get<std::string>("Method") == "MINRES";
+    const bool symmetric = !ls.isParameter("Symmetric") || ls.get<bool>("Symmetric");
+    SC_THROW_IF(minres && (boundaryConditions_.hasContact() || !symmetric), core::InputError,
+                "Linear Solver/Iterative/Method = MINRES needs a symmetric system, but "
+                    << (boundaryConditions_.hasContact()
+                            ? "this scene has a Contact boundary (contact rows are not symmetric)"
+                            : "Linear Solver/Symmetric = false")
+                    << "; use GMRES or Auto");
   }
   estimatorSettings_ = estimator::EstimatorSettings::fromParameters(params_->sublist("Estimator"));
   adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));

@@ -525,9 +525,23 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
     Vector diag(map);
     P->getLocalDiagCopy(diag);
     const auto dv = diag.getData(0);
+    // HRZ lumping: the diagonal scaled to keep the total mass, c = 1ᵀM_θ1 / tr M_θ (the same
+    // ratio on every affine element, so this is the element-wise HRZ lumping; = row-sum lumping
+    // for P1, and positive for k ≥ 2 where row sums are not).
+    double sums[2] = {0.0, 0.0}, global[2] = {0.0, 0.0};
+    for (LO l : prec->rotationLids) {
+      typename CrsMatrix::local_inds_host_view_type inds;
+      typename CrsMatrix::values_host_view_type v;
+      P->getLocalRowView(l, inds, v);
+      for (size_t k = 0; k < inds.extent(0); ++k)
+        sums[0] += v(k);
+      sums[1] += dv[l];
+    }
+    Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 2, sums, global);
+    const double hrz = global[1] > 0.0 ? global[0] / global[1] : 1.0;
     prec->rotationInverseDiagonal.resize(prec->rotationLids.size());
     for (std::size_t i = 0; i < prec->rotationLids.size(); ++i) {
-      const double v = dv[prec->rotationLids[i]];
+      const double v = hrz * dv[prec->rotationLids[i]];
       SC_THROW_IF(!(v > 0.0), sc::core::InternalError,
                   "block preconditioner: rotation mass diagonal " << v << " is not positive");
       prec->rotationInverseDiagonal[i] = 1.0 / v;
