@@ -2,8 +2,8 @@
 // issue #10) on the manufactured elasticity problems of docs/verification.md:
 //  - iteration counts to a 1e-8 relative residual (the true one) stay within 1.5× over refinement
 //    levels and ν ∈ {0.3, 0.49, 0.4999, 0.5}: the acceptance bound of issue #10. Measured when
-//    written (HRZ-lumped θ block): 45–58 (2D, 767–11777 DOFs), 67–77 (3D, 4452–33720 DOFs); DESIGN §6's prototype saw
-//    21–36 with exact blocks, counted on the preconditioned residual;
+//    written (HRZ-lumped θ block): 45–58 (2D, 767–11777 DOFs), 67–77 (3D, 4452–33720 DOFs);
+//    DESIGN §6's prototype saw 21–36 with exact blocks, on the preconditioned residual;
 //  - the solution agrees with MUMPS' to the solver tolerance, at every rank count this test runs;
 //  - non-convergence and unavailable components are clear errors.
 #include <algorithm>
