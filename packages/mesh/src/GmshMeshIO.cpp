@@ -1,6 +1,7 @@
 #include <sc/mesh/GmshMeshIO.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/core/FloatingPointTraps.hpp>
 
 #include <gmsh.h>
 
@@ -102,9 +103,20 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
   std::vector<double> allCoords, params;
   gmsh::model::mesh::getNodes(allTags, allCoords, params, -1, -1, true, false);
   std::vector<double> coords(usedTags.size() * dim, std::nan(""));
+  // A coordinate "nan" or "inf" in the file (Gmsh's reader accepts both) is refused before any
+  // arithmetic: it would make every measure and check of the mesh NaN.
+  for (std::size_t i = 0; i < allTags.size(); ++i) {
+    const double* x = &allCoords[3 * i];
+    SC_THROW_IF(index.count(allTags[i]) &&
+                    !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])),
+                sc::core::InputError,
+                origin << ": node " << allTags[i] << " has a non-finite coordinate (" << x[0]
+                       << ", " << x[1] << ", " << x[2] << ")");
+  }
   double extent = 0;
   for (std::size_t i = 0; i < allTags.size(); ++i)
-    for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(allCoords[3 * i + k]));
+    if (index.count(allTags[i]))
+      for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(allCoords[3 * i + k]));
   for (std::size_t i = 0; i < allTags.size(); ++i) {
     auto it = index.find(allTags[i]);
     if (it == index.end()) continue;
@@ -160,6 +172,10 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
 
 void buildGeometryModel(const Geometry& geometry, double meshSize)
 {
+  // Gmsh's OpenCASCADE kernel and mesh generators compute with NaNs internally (0/0 in
+  // MTri3's circumradius of a degenerate candidate, among others: trapped under SC_TRAP_FPE);
+  // that is Gmsh's business, so traps are off while it builds the mesh.
+  sc::core::FloatingPointTrapsSuspended gmshComputes;
   const int dim = geometry.dim();
   gmsh::model::add("scene");
   geometry.addToGmshModel();
@@ -235,6 +251,7 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
   }
   GmshSession session;
   try {
+    sc::core::FloatingPointTrapsSuspended gmshReads;  // Gmsh's reader, as in buildGeometryModel
     gmsh::open(path);
   } catch (...) {
     SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());
