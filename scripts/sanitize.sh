@@ -21,9 +21,13 @@ SC_DEBIAN_PACKAGES+=(clang libclang-rt-14-dev)
 sc_install_dependencies
 
 if [ ! -f "$SC_BUILD_DIR/build.ninja" ]; then
-  sc_log "configuring $SC_BUILD_DIR (clang, Release with debug info, ASan + UBSan, fuzz targets)"
+  # -O2 with line tables only: sanitizer reports name file:line, and the Tpetra-heavy files
+  # compile far faster than with full debug information.
+  sc_log "configuring $SC_BUILD_DIR (clang, -O2 with line tables, ASan + UBSan, fuzz targets)"
   CC=clang CXX=clang++ cmake -S "$SC_ROOT" -B "$SC_BUILD_DIR" -G Ninja \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
     -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache \
     -DCMAKE_INSTALL_PREFIX="$SC_BUILD_DIR/install" \
     -DSC_ENABLE_SANITIZERS=ON -DSC_ENABLE_FUZZING=ON -DSC_ENABLE_BENCHMARKS=ON

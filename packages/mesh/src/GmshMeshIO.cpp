@@ -6,11 +6,19 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <unordered_map>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace sc::mesh {
 
@@ -47,6 +55,51 @@ std::string lastGmshError()
   } catch (...) {
   }
   return err.empty() ? std::string("(Gmsh gave no message)") : err;
+}
+
+// Gmsh 4.8's .msh readers trust the file: a damaged $Nodes or $Elements section can make them
+// read out of bounds and crash (found by fuzzing: a SEGV in GModel::getMeshVertexByTag from
+// _readMSH4; docs/reliability.md "Fuzzing"). So Gmsh first reads the file in a child process
+// that does nothing else; if the child dies, the file is refused with an input error instead of
+// the run (every MPI rank) crashing. Returns the child's signal (> 0), or its non-zero exit
+// status negated (Gmsh calling exit), or 0 when Gmsh read the file without dying (it may still
+// have reported an error, which the real read then gives).
+int gmshReaderDies(const std::string& path)
+{
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0)
+    return 0;  // no child possible: read in this process, as before
+  if (pid == 0) {
+    // The child: default handlers, so that a crash ends it at once (no sanitizer or fuzzer
+    // report from a copy of this process), output discarded, no MPI, no exit handlers.
+    for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL})
+      std::signal(sig, SIG_DFL);
+    if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+    }
+    try {
+      GmshSession session;
+      sc::core::FloatingPointTrapsSuspended gmshReads;
+      gmsh::open(path);
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elemTags, nodeTags;
+      gmsh::model::mesh::getElements(types, elemTags, nodeTags, -1, -1);
+      std::vector<std::size_t> tags;
+      std::vector<double> coords, params;
+      gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, true, false);
+    } catch (...) {
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR)
+      return 0;
+  if (WIFSIGNALED(status))
+    return WTERMSIG(status);
+  return WIFEXITED(status) ? -WEXITSTATUS(status) : 0;
 }
 
 std::string elementTypeName(int type)
@@ -248,6 +301,16 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
     std::ifstream probe(path);
     SC_THROW_IF(!probe, sc::core::InputError,
                 origin << " (Mesh/File) cannot be opened: no such file or no read permission");
+  }
+  if (const int died = gmshReaderDies(path); died != 0) {
+    std::ostringstream why;
+    if (died > 0)
+      why << "signal " << died << " (" << strsignal(died) << ")";
+    else
+      why << "exit status " << -died;
+    SC_THROW_IF(true, sc::core::InputError,
+                origin << " cannot be read: Gmsh's reader crashed on it (" << why.str()
+                       << "); the file is damaged or not a .msh file of format 2.2 or 4.1");
   }
   GmshSession session;
   try {

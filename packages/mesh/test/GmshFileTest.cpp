@@ -143,6 +143,19 @@ TEUCHOS_UNIT_TEST(GmshFile, NonFiniteCoordinatesNameTheNode)
   TEST_EQUALITY(m->numElements(), 1);
 }
 
+TEUCHOS_UNIT_TEST(GmshFile, FileThatCrashesGmshIsAnInputError)
+{
+  // Found by fuzz_gmsh (docs/reliability.md "Fuzzing"): half_disc_h0.25_v41.msh with damaged
+  // $Nodes lines. Gmsh 4.8's MSH4 reader reads out of bounds on it (SEGV in
+  // GModel::getMeshVertexByTag): before, the whole program died of a segmentation fault.
+  expectInputError([] { GmshMeshIO::readFile(dataDir + "/fuzz_msh4_damaged_nodes.msh", 2); },
+                   {"fuzz_msh4_damaged_nodes.msh", "Gmsh's reader crashed on it (signal 11"},
+                   success, out);
+  // The good file beside it still reads (the check runs Gmsh in a child process first).
+  TEST_EQUALITY(GmshMeshIO::readFile(dataDir + "/half_disc_h0.25_v41.msh", 2)->numElements() > 0,
+                true);
+}
+
 TEUCHOS_UNIT_TEST(GmshFile, UnnamedPhysicalGroupsAndUntaggedFaces)
 {
   // Two triangles; the bottom edge is in physical group 5 (no name), the rest untagged.
