@@ -14,7 +14,7 @@ set(SC_MPIEXEC_EXTRA_FLAGS "--oversubscribe")
 # Every test runs with floating-point exceptions trapped (FE_INVALID, FE_DIVBYZERO, FE_OVERFLOW;
 # sc/core/FloatingPointTraps.hpp) unless configured with -DSC_TRAP_FPE=0.
 set(SC_TRAP_FPE 1 CACHE STRING "Value of SC_TRAP_FPE in the tests' environment (1: trap)")
-# Sanitized code runs 4-7 times slower (docs/reliability.md "Sanitizers"): the time limits of
+# Sanitized code runs 2-7 times slower (docs/reliability.md "Sanitizers"): the time limits of
 # sc_add_test grow with it.
 if(SC_ENABLE_SANITIZERS OR SC_ENABLE_FUZZING)
   set(SC_TEST_TIMEOUT_FACTOR 3)
