@@ -11,6 +11,16 @@
 #     the same per-rank tests for a command that calls mpiexec itself (@NP@ in its arguments).
 
 set(SC_MPIEXEC_EXTRA_FLAGS "--oversubscribe")
+# Every test runs with floating-point exceptions trapped (FE_INVALID, FE_DIVBYZERO, FE_OVERFLOW;
+# sc/core/FloatingPointTraps.hpp) unless configured with -DSC_TRAP_FPE=0.
+set(SC_TRAP_FPE 1 CACHE STRING "Value of SC_TRAP_FPE in the tests' environment (1: trap)")
+# Sanitized code runs 2-7 times slower (docs/reliability.md "Sanitizers"): the time limits of
+# sc_add_test grow with it.
+if(SC_ENABLE_SANITIZERS OR SC_ENABLE_FUZZING)
+  set(SC_TEST_TIMEOUT_FACTOR 3)
+else()
+  set(SC_TEST_TIMEOUT_FACTOR 1)
+endif()
 execute_process(COMMAND id -u OUTPUT_VARIABLE _sc_uid OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
 if(_sc_uid STREQUAL "0")
   list(APPEND SC_MPIEXEC_EXTRA_FLAGS "--allow-run-as-root")
@@ -69,6 +79,7 @@ function(sc_add_test name)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 300)
   endif()
+  math(EXPR T_TIMEOUT "${T_TIMEOUT} * ${SC_TEST_TIMEOUT_FACTOR}")
   if(NOT T_WORKING_DIRECTORY)
     set(T_WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   endif()
@@ -99,7 +110,8 @@ function(sc_add_test name)
     add_test(NAME ${tname} COMMAND ${full} WORKING_DIRECTORY ${T_WORKING_DIRECTORY})
     # Oversubscribed ranks on a 2-core machine: PROCESSORS keeps ctest -j from stacking them.
     set_tests_properties(${tname} PROPERTIES PROCESSORS ${procs} TIMEOUT ${T_TIMEOUT}
-                         SKIP_RETURN_CODE 77 ENVIRONMENT "OMPI_MCA_rmaps_base_oversubscribe=1")
+                         SKIP_RETURN_CODE 77
+                         ENVIRONMENT "OMPI_MCA_rmaps_base_oversubscribe=1;SC_TRAP_FPE=${SC_TRAP_FPE}")
     if(T_WILL_FAIL)
       set_tests_properties(${tname} PROPERTIES WILL_FAIL TRUE)
     endif()

@@ -22,6 +22,7 @@
 #include <mpi.h>
 
 #include <sc/core/Error.hpp>
+#include <sc/core/FloatingPointTraps.hpp>
 
 #include "DeckParameters.hpp"
 #include "Simulation.hpp"
@@ -162,6 +163,7 @@ int main(int argc, char* argv[])
       return 0;
     }
   Kokkos::ScopeGuard kokkos(argc, argv);
+  sc::core::enableFloatingPointTrapsFromEnvironment();  // SC_TRAP_FPE=1: set by CTest
   ErrorAgreement errors;
   int code = 0;
   std::string title, message;

@@ -1,15 +1,24 @@
 #include <sc/mesh/GmshMeshIO.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/core/FloatingPointTraps.hpp>
 
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <unordered_map>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace sc::mesh {
 
@@ -46,6 +55,51 @@ std::string lastGmshError()
   } catch (...) {
   }
   return err.empty() ? std::string("(Gmsh gave no message)") : err;
+}
+
+// Gmsh 4.8's .msh readers trust the file: a damaged $Nodes or $Elements section can make them
+// read out of bounds and crash (found by fuzzing: a SEGV in GModel::getMeshVertexByTag from
+// _readMSH4; docs/reliability.md "Fuzzing"). So Gmsh first reads the file in a child process
+// that does nothing else; if the child dies, the file is refused with an input error instead of
+// the run (every MPI rank) crashing. Returns the child's signal (> 0), or its non-zero exit
+// status negated (Gmsh calling exit), or 0 when Gmsh read the file without dying (it may still
+// have reported an error, which the real read then gives).
+int gmshReaderDies(const std::string& path)
+{
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0)
+    return 0;  // no child possible: read in this process, as before
+  if (pid == 0) {
+    // The child: default handlers, so that a crash ends it at once (no sanitizer or fuzzer
+    // report from a copy of this process), output discarded, no MPI, no exit handlers.
+    for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL})
+      std::signal(sig, SIG_DFL);
+    if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+    }
+    try {
+      GmshSession session;
+      sc::core::FloatingPointTrapsSuspended gmshReads;
+      gmsh::open(path);
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elemTags, nodeTags;
+      gmsh::model::mesh::getElements(types, elemTags, nodeTags, -1, -1);
+      std::vector<std::size_t> tags;
+      std::vector<double> coords, params;
+      gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, true, false);
+    } catch (...) {
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR)
+      return 0;
+  if (WIFSIGNALED(status))
+    return WTERMSIG(status);
+  return WIFEXITED(status) ? -WEXITSTATUS(status) : 0;
 }
 
 std::string elementTypeName(int type)
@@ -102,9 +156,20 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
   std::vector<double> allCoords, params;
   gmsh::model::mesh::getNodes(allTags, allCoords, params, -1, -1, true, false);
   std::vector<double> coords(usedTags.size() * dim, std::nan(""));
+  // A coordinate "nan" or "inf" in the file (Gmsh's reader accepts both) is refused before any
+  // arithmetic: it would make every measure and check of the mesh NaN.
+  for (std::size_t i = 0; i < allTags.size(); ++i) {
+    const double* x = &allCoords[3 * i];
+    SC_THROW_IF(index.count(allTags[i]) &&
+                    !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])),
+                sc::core::InputError,
+                origin << ": node " << allTags[i] << " has a non-finite coordinate (" << x[0]
+                       << ", " << x[1] << ", " << x[2] << ")");
+  }
   double extent = 0;
   for (std::size_t i = 0; i < allTags.size(); ++i)
-    for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(allCoords[3 * i + k]));
+    if (index.count(allTags[i]))
+      for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(allCoords[3 * i + k]));
   for (std::size_t i = 0; i < allTags.size(); ++i) {
     auto it = index.find(allTags[i]);
     if (it == index.end()) continue;
@@ -160,6 +225,10 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
 
 void buildGeometryModel(const Geometry& geometry, double meshSize)
 {
+  // Gmsh's OpenCASCADE kernel and mesh generators compute with NaNs internally (0/0 in
+  // MTri3's circumradius of a degenerate candidate, among others: trapped under SC_TRAP_FPE);
+  // that is Gmsh's business, so traps are off while it builds the mesh.
+  sc::core::FloatingPointTrapsSuspended gmshComputes;
   const int dim = geometry.dim();
   gmsh::model::add("scene");
   geometry.addToGmshModel();
@@ -233,8 +302,19 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
     SC_THROW_IF(!probe, sc::core::InputError,
                 origin << " (Mesh/File) cannot be opened: no such file or no read permission");
   }
+  if (const int died = gmshReaderDies(path); died != 0) {
+    std::ostringstream why;
+    if (died > 0)
+      why << "signal " << died << " (" << strsignal(died) << ")";
+    else
+      why << "exit status " << -died;
+    SC_THROW_IF(true, sc::core::InputError,
+                origin << " cannot be read: Gmsh's reader crashed on it (" << why.str()
+                       << "); the file is damaged or not a .msh file of format 2.2 or 4.1");
+  }
   GmshSession session;
   try {
+    sc::core::FloatingPointTrapsSuspended gmshReads;  // Gmsh's reader, as in buildGeometryModel
     gmsh::open(path);
   } catch (...) {
     SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());

@@ -125,6 +125,37 @@ TEUCHOS_UNIT_TEST(GmshFile, UnsupportedAndInvalidElementsNameTheEntity)
                    {"hang.msh", "hanging node: node 5 lies inside the edge (node 1, node 2)"}, success, out);
 }
 
+TEUCHOS_UNIT_TEST(GmshFile, NonFiniteCoordinatesNameTheNode)
+{
+  // Gmsh reads "nan" and "inf" as numbers (issue #12: NaN in mesh data was untested; before, a
+  // NaN y passed and the mesh checks compared NaNs).
+  for (const std::string bad : {"nan", "-inf"}) {
+    std::string text = std::string(kHeader) + "$Nodes\n3\n1 0 0 0\n2 1 " + bad +
+                       " 0\n3 0 1 0\n$EndNodes\n$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";
+    expectInputError([&] { GmshMeshIO::readFile(writeFile("nan.msh", text), 2); },
+                     {"nan.msh", "node 2 has a non-finite coordinate (1, "}, success, out);
+  }
+  // An unused node with a NaN coordinate is ignored, as unused nodes are.
+  std::string unused = std::string(kHeader) +
+                       "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 nan nan nan\n$EndNodes\n"
+                       "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";
+  auto m = GmshMeshIO::readFile(writeFile("nan_unused.msh", unused), 2);
+  TEST_EQUALITY(m->numElements(), 1);
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, FileThatCrashesGmshIsAnInputError)
+{
+  // Found by fuzz_gmsh (docs/reliability.md "Fuzzing"): half_disc_h0.25_v41.msh with damaged
+  // $Nodes lines. Gmsh 4.8's MSH4 reader reads out of bounds on it (SEGV in
+  // GModel::getMeshVertexByTag): before, the whole program died of a segmentation fault.
+  expectInputError([] { GmshMeshIO::readFile(dataDir + "/fuzz_msh4_damaged_nodes.msh", 2); },
+                   {"fuzz_msh4_damaged_nodes.msh", "Gmsh's reader crashed on it (signal 11"},
+                   success, out);
+  // The good file beside it still reads (the check runs Gmsh in a child process first).
+  TEST_EQUALITY(GmshMeshIO::readFile(dataDir + "/half_disc_h0.25_v41.msh", 2)->numElements() > 0,
+                true);
+}
+
 TEUCHOS_UNIT_TEST(GmshFile, UnnamedPhysicalGroupsAndUntaggedFaces)
 {
   // Two triangles; the bottom edge is in physical group 5 (no name), the rest untagged.

@@ -16,6 +16,7 @@
 #include <Teuchos_XMLParameterListReader.hpp>
 
 #include "sc/core/Error.hpp"
+#include "sc/core/FloatingPointTraps.hpp"
 #include "sc/core/ValueText.hpp"
 
 namespace sc::core {
@@ -390,7 +391,13 @@ std::string checkDoubleText(const std::string& raw, double* out)
     return "empty value";
   errno = 0;
   char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
+  double v = 0;
+  {
+    // glibc's strtod raises FE_OVERFLOW for "1e999" (and FE_INVALID for nothing); the result is
+    // checked below, so the flag is not a fault here.
+    FloatingPointTrapsSuspended strtodMayOverflow;
+    v = std::strtod(t.c_str(), &end);
+  }
   if (end == t.c_str())
     return "not a number";
   if (*end != '\0')
