@@ -16,6 +16,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/core/FloatingPointTraps.hpp>
 #include <sc/solvers/DirectSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <sc/solvers/RuizEquilibration.hpp>
@@ -326,6 +327,41 @@ TEUCHOS_UNIT_TEST(DirectSolver, SingularMatrixIsAnError)
   TEST_THROW(solveManufactured(*s, dup), sc::core::Error);
   const double err = solveManufactured(*s, poisson2d(comm, 12));
   TEST_COMPARE(err, <=, 1e-10);
+}
+
+// A NaN in the matrix (a corrupted assembly) gives an error naming the non-finite solution or the
+// singular factorisation on every rank, never a NaN solution returned as a result. Traps are
+// suspended: under SC_TRAP_FPE=1 the first NaN operation would stop the test, which is what
+// traps are for, but here the NaN is the input.
+TEUCHOS_UNIT_TEST(DirectSolver, NonFiniteMatrixIsAnError)
+{
+  auto comm = Tpetra::getDefaultComm();
+  auto A = poisson2d(comm, 12);
+  A->resumeFill();
+  const auto& rows = *A->getRowMap();
+  for (size_t i = 0; i < A->getNodeNumRows(); ++i) {
+    const long long g = rows.getGlobalElement(i);
+    if (g == 17) {
+      const long long col = g;
+      const double nan = std::nan("");
+      A->replaceGlobalValues(g, Teuchos::ArrayView<const long long>(&col, 1),
+                             Teuchos::ArrayView<const double>(&nan, 1));
+    }
+  }
+  A->fillComplete();
+  sc::core::FloatingPointTrapsSuspended noTraps;
+  for (const std::string type : {"KLU2", "MUMPS"})
+    for (const bool equilibrate : {true, false}) {
+      auto s = makeSolver(type, false, equilibrate);
+      bool threw = false;
+      try {
+        solveManufactured(*s, A);
+      } catch (const sc::core::Error& e) {
+        threw = true;
+        out << type << (equilibrate ? " equilibrated" : "") << ": " << e.what() << "\n";
+      }
+      TEST_ASSERT(threw);
+    }
 }
 
 // Results agree across rank counts: the distributed solve equals the same solver's solve on rank 0
