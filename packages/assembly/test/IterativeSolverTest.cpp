@@ -94,7 +94,7 @@ TEUCHOS_UNIT_TEST(IterativeSolver, RobustInHAndLambda3D) { checkRobustness(3, 2,
 void checkMultigrid(int dim, int levels, Teuchos::FancyOStream& out, bool& success)
 {
   int lo = 1 << 30, hi = 0;
-  for (double nu : {0.3, 0.49, 0.4999, 0.5}) {
+  for (double nu : {0.3, 0.5}) {  // the exact-block tests cover 0.49 and 0.4999 (test time)
     auto s = iterativeSetup(dim, levels, nu);
     s.multigrid = true;
     s.solverOptions.sublist("Iterative").set("Stress block", std::string("Multigrid"));

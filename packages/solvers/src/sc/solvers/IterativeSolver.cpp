@@ -515,7 +515,6 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
     P->rightScale(s);
     auto prec = Teuchos::rcp(new BlockDiagonalPreconditioner());
     prec->map = map;
-    std::vector<LO> thetaLids;
     prec->stressMap = subMap(*map, blocks.begin(0), blocks.end(0), prec->stressLids);
     prec->displacementMap = subMap(*map, blocks.begin(1), blocks.end(1), prec->displacementLids);
     subMap(*map, blocks.begin(2), blocks.end(2), prec->rotationLids);
