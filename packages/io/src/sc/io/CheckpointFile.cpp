@@ -7,6 +7,8 @@
 
 #include <hdf5.h>
 
+#include "sc/io/detail/Hdf5Handles.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -17,45 +19,8 @@ namespace sc::io {
 
 namespace {
 
-// HDF5's automatic error printing off while we work (errors are reported by us, naming the file).
-class ErrorPrintingOff {
-public:
-  ErrorPrintingOff()
-  {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  ErrorPrintingOff(const ErrorPrintingOff&) = delete;
-  ErrorPrintingOff& operator=(const ErrorPrintingOff&) = delete;
-
-private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-class Handle {
-public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle()
-  {
-    if (id_ >= 0)
-      close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  herr_t close()
-  {
-    const herr_t status = id_ >= 0 ? close_(id_) : 0;
-    id_ = -1;
-    return status;
-  }
-
-private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using ErrorPrintingOff = detail::Hdf5ErrorPrintingOff;
+using Handle = detail::Hdf5Handle;
 
 // Writing: a failure names the file, the object and, for the usual write failures, the system's
 // reason (errno may be stale otherwise).

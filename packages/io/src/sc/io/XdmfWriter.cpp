@@ -9,6 +9,8 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include <hdf5.h>
+
+#include "sc/io/detail/Hdf5Handles.hpp"
 #include <mpi.h>
 
 #include <algorithm>
@@ -47,48 +49,8 @@ std::string xmlEscape(const std::string& s)
   return out;
 }
 
-// Turns HDF5's automatic error-stack printing off while we write (we report errors ourselves,
-// naming file and dataset) and restores the caller's setting afterwards.
-class Hdf5ErrorPrintingOff {
-public:
-  Hdf5ErrorPrintingOff()
-  {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~Hdf5ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  Hdf5ErrorPrintingOff(const Hdf5ErrorPrintingOff&) = delete;
-  Hdf5ErrorPrintingOff& operator=(const Hdf5ErrorPrintingOff&) = delete;
-
-private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
-// Owns an HDF5 identifier and closes it with the matching H5?close.
-class Handle {
-public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle()
-  {
-    if (id_ >= 0)
-      close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  // Close now and report failure (used for the file, where close flushes the data).
-  herr_t close()
-  {
-    const herr_t status = id_ >= 0 ? close_(id_) : 0;
-    id_ = -1;
-    return status;
-  }
-
-private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+using detail::Hdf5ErrorPrintingOff;
+using Handle = detail::Hdf5Handle;
 
 // Context for error messages: every HDF5 failure names the file and the object.
 struct H5Context {
