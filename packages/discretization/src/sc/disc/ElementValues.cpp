@@ -96,21 +96,9 @@ void ElementValues::reinitAtPoints(int e, const std::vector<double>& physicalPoi
   const int d = space_.dim();
   const int n = static_cast<int>(physicalPoints.size() / 3);
   AffineMap F(m, e);
-  // x̂ = J⁻¹ (x − x0) by the adjugate (J is 2×2 or 3×3).
+  // x̂ = J⁻¹ (x − x0)
   double inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  const auto& J = F.J;
-  if (d == 2) {
-    inv[0][0] = J[1][1] / F.det;
-    inv[0][1] = -J[0][1] / F.det;
-    inv[1][0] = -J[1][0] / F.det;
-    inv[1][1] = J[0][0] / F.det;
-  } else {
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-        inv[i][j] = (J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1]) / F.det;
-      }
-  }
+  F.inverse(d, inv);
   View pts("points", n, d);
   for (int q = 0; q < n; ++q)
     for (int i = 0; i < d; ++i) {

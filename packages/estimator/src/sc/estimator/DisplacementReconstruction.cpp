@@ -37,20 +37,11 @@ using NodeKey = std::array<int, kMaxDegree>;  // sorted vertex ids, each repeate
 // J^{-T} of an affine map (d = 2, 3): physical gradient = J^{-T} reference gradient.
 void inverseTranspose(const AffineMap& F, int d, double G[3][3])
 {
-  const auto& J = F.J;
-  if (d == 2) {
-    G[0][0] = J[1][1] / F.det;
-    G[0][1] = -J[1][0] / F.det;
-    G[1][0] = -J[0][1] / F.det;
-    G[1][1] = J[0][0] / F.det;
-    return;
-  }
-  // (J^{-1})_ij = cof(J)_ji / det, so (J^{-T})_ij = cof(J)_ij / det.
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      G[i][j] = (J[i1][j1] * J[i2][j2] - J[i1][j2] * J[i2][j1]) / F.det;
-    }
+  double inv[3][3];
+  F.inverse(d, inv);
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j)
+      G[i][j] = inv[j][i];
 }
 
 }  // namespace
