@@ -77,6 +77,15 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                         ls.isSublist("Iterative") && ls.sublist("Iterative").isParameter("Method") &&
                         ls.sublist("Iterative").get<std::string>("Method") == "MINRES";
     const bool symmetric = !ls.isParameter("Symmetric") || ls.get<bool>("Symmetric");
+    // The Krylov solver with contact rows is verified (against MUMPS, run_hertz2d_iterative) in
+    // 2D at degree 1 only; other contact scenes are rejected until a test covers them.
+    const bool iterative = ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative";
+    SC_THROW_IF(iterative && boundaryConditions_.hasContact() &&
+                    (dim != 2 || discretization_.degree != 1),
+                core::InputError,
+                "Linear Solver/Type = Iterative with contact is verified only in 2D at "
+                "'Discretization/Degree' = 1 (docs/solvers.md); this scene is "
+                    << dim << "D at degree " << discretization_.degree << ": use MUMPS or KLU2");
     SC_THROW_IF(minres && (boundaryConditions_.hasContact() || !symmetric), core::InputError,
                 "Linear Solver/Iterative/Method = MINRES needs a symmetric system, but "
                     << (boundaryConditions_.hasContact()
