@@ -25,6 +25,7 @@
 #include <sc/io/CsvWriter.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
+#include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/estimator/ContactContribution.hpp>
 #include <sc/estimator/DisplacementReconstruction.hpp>
@@ -35,6 +36,7 @@
 #include <sc/io/OutputDirectory.hpp>
 #include <sc/io/RunSummary.hpp>
 #include <sc/io/XdmfWriter.hpp>
+#include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
@@ -233,14 +235,20 @@ void Simulation::setupElasticity()
 {
   {
     auto t = timers_.scope("setup");
+    // Mesh/Geometry order = 2: quadratic elements at the curved boundary (null otherwise).
+    auto curved = mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_);
     space_ = Teuchos::rcp(new disc::MixedElasticitySpace(mesh_, discretization_.degree,
-                                                         elementOwner_, comm_->getRank()));
+                                                         elementOwner_, comm_->getRank(), curved));
     assembler_ = std::make_unique<assembly::MixedElasticityAssembler>(space_, comm_);
   }
+  const auto* curved = space_->curvedElements();
   progress_.report("setup", std::to_string(space_->numGlobalDofs()) + " DOFs (stress " +
                                 std::to_string(space_->numStressDofs()) + ", displacement " +
                                 std::to_string(space_->numDisplacementDofs()) + ", rotation " +
-                                std::to_string(space_->numRotationDofs()) + ")");
+                                std::to_string(space_->numRotationDofs()) + ")" +
+                                (curved ? ", " + std::to_string(curved->numCurvedElements()) +
+                                              " curved (quadratic) elements"
+                                        : std::string()));
   {
     auto t = timers_.scope("assemble");
     assembler_->assemble({material_, boundaryConditions_, exact_.get()});
@@ -529,9 +537,16 @@ void Simulation::recordCycle(int cycle)
       progress_.report("errors", os.str());
     }
   }
+  // The measure of the discrete domain: with curved elements, that of their quadratic maps.
+  const double localMeasure = disc::ownedMeasure(*space_);
+  double measure = 0.0;
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 1, &localMeasure, &measure);
+  const auto* curved = space_->curvedElementsPtr().get();
   c["mesh"] = {{"vertices", mesh_->numVertices()},
                {"elements", mesh_->numElements()},
-               {"measure", mesh_->measure()},
+               {"measure", measure},
+               {"geometry_order", space_->geometryOrder()},
+               {"curved_elements", curved ? curved->numCurvedElements() : 0},
                {"min_angle_deg", mesh_->minAngleDeg()}};
   std::vector<long long> owned(comm_->getSize(), 0);
   for (int o : elementOwner_)

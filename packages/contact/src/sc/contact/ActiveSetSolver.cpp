@@ -202,33 +202,45 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         continue;
       const auto dofPoints = disc::stressFaceDofPoints(space, e, lf);
       fv.reinit(e, lf);
-      // The contact frame (n, t1[, t2]): n along the obstacle's normal (out of the body) or the
-      // face's outward normal; fv.normal() is the latter.
-      std::array<double, 3> n = fv.normal();
-      if (obstacleFrame)
-        n = obstacle_->contactNormal(dofPoints.front().x.data());
-      std::array<double, 3> t1{}, t2{};
-      if (d == 2) {
-        t1 = {-n[1], n[0], 0.0};
-      } else {
-        // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
-        int axis = 0;
-        for (int i = 1; i < 3; ++i)
-          if (std::abs(n[i]) < std::abs(n[axis]))
-            axis = i;
-        std::array<double, 3> a{0, 0, 0};
-        a[axis] = 1.0;
-        const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
-        double norm = 0.0;
-        for (int i = 0; i < 3; ++i) {
-          t1[i] = a[i] - an * n[i];
-          norm += t1[i] * t1[i];
+      // The contact frame (n, t1[, t2]) of each point: n along the obstacle's normal (out of the
+      // body) or the body's outward normal at the point (constant on a straight face, varying
+      // on a curved one).
+      SC_THROW_IF(!obstacleFrame && bernstein_ && fv.curved(), core::InputError,
+                  "'Contact/Frame' = 'Body normal' on curved contact faces ('Mesh/Geometry order' "
+                  "= 2) is not available for 3D degree 2, whose constraints mix the points of a "
+                  "face in one frame: use 'Contact/Frame' = 'Obstacle normal' or 'Mesh/Geometry "
+                  "order' = 1.");
+      auto frameAt = [&](const disc::FaceDofPoint& dp) {
+        std::array<std::array<double, 3>, 3> fr{};
+        auto& n = fr[0];
+        auto& t1 = fr[1];
+        auto& t2 = fr[2];
+        n = obstacleFrame ? obstacle_->contactNormal(dp.x.data()) : dp.normal;
+        if (d == 2) {
+          t1 = {-n[1], n[0], 0.0};
+        } else {
+          // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
+          int axis = 0;
+          for (int i = 1; i < 3; ++i)
+            if (std::abs(n[i]) < std::abs(n[axis]))
+              axis = i;
+          std::array<double, 3> a{0, 0, 0};
+          a[axis] = 1.0;
+          const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+          double norm = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            t1[i] = a[i] - an * n[i];
+            norm += t1[i] * t1[i];
+          }
+          for (double& c : t1)
+            c /= std::sqrt(norm);
+          t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
         }
-        for (double& c : t1)
-          c /= std::sqrt(norm);
-        t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
-      }
-      const double area = m.faceMeasure(f);
+        return fr;
+      };
+      // Face-wide frame for the (3D degree 2) Bernstein constraints: that of the first point.
+      const auto faceFrame = frameAt(dofPoints.front());
+      const double area = fv.measure();
       const double hF = d == 2 ? area : std::sqrt(area);
       const int nq = static_cast<int>(dofPoints.size());
       ContactFace cf;
@@ -250,7 +262,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
       cf.V.assign(static_cast<std::size_t>(nq) * nq, 0.0);
       for (int q = 0; q < nq; ++q)
         for (int pp = 0; pp < nq; ++pp)
-          cf.V[q * nq + pp] = bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].x.data(), d),
+          cf.V[q * nq + pp] = bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].xAffine.data(), d),
                                                      space.degree())
                                          : (q == pp ? 1.0 : 0.0);
       cf.Vinv = bernstein_ ? invert(cf.V, nq) : cf.V;
@@ -266,9 +278,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         } else {
           p.x = dofPoints[pp].x;
         }
-        p.n = n;
-        p.t1 = t1;
-        p.t2 = t2;
+        const auto fr = bernstein_ ? faceFrame : frameAt(dofPoints[pp]);
+        p.n = fr[0];
+        p.t1 = fr[1];
+        p.t2 = fr[2];
         p.c = penaltyFactor_ * twoMu / (hF * area);
         // The dual weight w_p = Σ_q V(q, p) ℓ_q (ℓ_q = ψ_q·n_F / s_q, the Lagrange function of the
         // normal trace at q): ℓ_p itself, or B_p. Weighted gap with face quadrature (not lumped).
@@ -276,7 +289,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
           double w = 0.0;
           for (int j = 0; j < nq; ++j)
             w += cf.V[j * nq + pp] * fv.stressNormal(dofPoints[j].localDof, q) / dofPoints[j].scale;
-          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), n.data(), cap) * w;
+          // The gap along the point's constraint direction: ν (obstacle frame), or the body's
+          // outward normal at q (body frame; constant on a straight face).
+          const double* dir = obstacleFrame || bernstein_ ? p.n.data() : fv.normal(q).data();
+          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), dir, cap) * w;
           p.weight += fv.weight(q) * w;
         }
         minRelativeWeight = std::min(minRelativeWeight, p.weight / area);
