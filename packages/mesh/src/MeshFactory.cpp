@@ -48,12 +48,13 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
     sc::core::declareBool(*p, "Project boundary", true,
                           "Project new vertices on curved boundaries (Arc, Cap) onto the exact "
                           "circle/sphere; false keeps the initial polygonal boundary");
-    sc::core::declareInt(*p, "Geometry order", 1,
-                         "1: straight-sided (affine) elements everywhere; 2: quadratic "
-                         "(isoparametric) elements at the scene's curved boundaries (Arc, Cap), "
-                         "their edge midpoints on the exact circle/sphere, mapped by the non-affine "
-                         "Piola maps (docs/mesh.md, 'Curved elements'). Needs Project boundary = "
-                         "true; no effect on scenes without curved parts or on Gmsh files",
+    sc::core::declareInt(*p, "Geometry order", 2,
+                         "2: quadratic (isoparametric) elements at the scene's curved boundaries "
+                         "(Arc, Cap), their edge midpoints on the exact circle/sphere, mapped by the "
+                         "non-affine Piola maps (docs/mesh.md, 'Curved elements'); needs Project "
+                         "boundary = true; no effect on scenes without curved parts or on Gmsh "
+                         "files. 1: straight-sided (affine) elements everywhere (the talk's "
+                         "'straight boundaries' study, with Project boundary = false)",
                          1, 2);
     sc::core::declareReal(*p, "Radius", 1.0, "Radius R of the Half disc / Half ball", 0.0, true);
     sc::core::declareString(*p, "File", "",

@@ -43,6 +43,7 @@ struct DisplacementReconstruction::Impl {
   View cubPoints, cubWeights;               // element cubature (reference)
   View values, grads;                       // (n, nq), (n, nq, d) at the cubature points
   int cubatureDegree = 0;
+  std::unique_ptr<ElementMap> cubatureMap;  // the element map at the cubature points (valuesAt)
 
   std::vector<long long> elementNodes;  // all elements, n global node ids each
   std::vector<int> overlapIndex;        // global node -> index among this rank's nodes, or -1
@@ -328,11 +329,13 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
 void DisplacementReconstruction::valuesAt(int e, const disc::ElementValues& ev, std::vector<double>& u,
                                           std::vector<double>& grad) const
 {
-  const auto& I = *impl_;
+  auto& I = *impl_;  // the cached cubature map is filled on first use
   const int d = space_.dim(), n = I.n, nq = ev.numPoints();
   SC_THROW_IF(nq != static_cast<int>(I.cubPoints.extent(0)), core::InternalError,
               "DisplacementReconstruction::valuesAt needs ElementValues of degree cubatureDegree()");
-  ElementMap F(space_, I.cubPoints);
+  if (!I.cubatureMap)
+    I.cubatureMap = std::make_unique<ElementMap>(space_, I.cubPoints);
+  ElementMap& F = *I.cubatureMap;
   F.reinit(e);
   {
     // The points of `ev` must be this tabulation's (same cubature rule, same order).
