@@ -153,13 +153,6 @@ bool useBernsteinConstraints(int dim, int /*degree*/, bool curvedFaces)
 
 void checkContactDegree(int dim, int degree, bool curvedFaces)
 {
-  // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
-  SC_THROW_IF(curvedFaces && ((dim == 2 && degree > 2) || (dim == 3 && degree > 1)), core::InputError,
-              "'Discretization/Degree' = " << degree << " with contact on curved faces "
-                  "('Mesh/Geometry order' = 2) in " << dim << "D is not verified (the Hertz tests "
-                  "cover k = " << (dim == 2 ? "1, 2" : "1") << " there). Set 'Mesh/Geometry "
-                  "order' = 1 (straight faces, verified for this degree) or a degree of "
-                  << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
   const double w = disc::minRelativeFaceDofWeight(dim, degree);
   SC_THROW_IF(w <= 1e-10, core::InputError,
               "'Discretization/Degree' = "
@@ -174,6 +167,13 @@ void checkContactDegree(int dim, int degree, bool curvedFaces)
               "'Discretization/Degree' = " << degree << " with contact in 3D is not verified "
                   "(the Hertz 3D tests cover k = 1, 2). Valid with contact: 1, 2 "
                   "(docs/contact.md, 'Degree').");
+  // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
+  SC_THROW_IF(curvedFaces && ((dim == 2 && degree > 2) || (dim == 3 && degree > 1)), core::InputError,
+              "'Discretization/Degree' = " << degree << " with contact on curved faces "
+                  "('Mesh/Geometry order' = 2) in " << dim << "D is not verified (the Hertz tests "
+                  "cover k = " << (dim == 2 ? "1, 2" : "1") << " there). Set 'Mesh/Geometry "
+                  "order' = 1 (straight faces, verified for this degree) or a degree of "
+                  << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
 }
 
 ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
@@ -205,6 +205,19 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
     contactIds.push_back(m.boundaryId(name));
   const bool obstacleFrame = settings.frame == core::ContactFrame::ObstacleNormal;
   bernstein_ = useBernsteinConstraints(d, space.degree(), space.geometryOrder() == 2);
+  // The body frame on curved contact faces: rejected on every rank alike (the mesh is
+  // replicated, so each rank sees all contact faces; a rank-local check would leave the other
+  // ranks waiting in the collectives below).
+  if (!obstacleFrame && space.curvedElements())
+    for (int f : m.boundaryFaces())
+      SC_THROW_IF(std::find(contactIds.begin(), contactIds.end(), m.faceBoundaryId(f)) != contactIds.end() &&
+                      space.isCurved(m.faceElements(f)[0]),
+                  core::InputError,
+                  "'Contact/Frame' = 'Body normal' on curved contact faces ('Mesh/Geometry order' "
+                  "= 2) is not available: the body normal varies along a curved face, and the "
+                  "constraints (Bernstein coefficients of the face's traction) need one frame per "
+                  "face. Use 'Contact/Frame' = 'Obstacle normal', or 'Mesh/Geometry order' = 1 "
+                  "for the talk's body-normal model on straight faces.");
   double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
   disc::FaceValues fv(space, 2 * space.degree() + 2);
   for (int e : space.ownedElements()) {
@@ -218,12 +231,6 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
       // The contact frame (n, t1[, t2]) of each point: n along the obstacle's normal (out of the
       // body) or the body's outward normal at the point (constant on a straight face, varying
       // on a curved one).
-      SC_THROW_IF(!obstacleFrame && fv.curved(), core::InputError,
-                  "'Contact/Frame' = 'Body normal' on curved contact faces ('Mesh/Geometry order' "
-                  "= 2) is not available: the body normal varies along a curved face, and the "
-                  "constraints (Bernstein coefficients of the face's traction) need one frame per "
-                  "face. Use 'Contact/Frame' = 'Obstacle normal', or 'Mesh/Geometry order' = 1 "
-                  "for the talk's body-normal model on straight faces.");
       auto frameAt = [&](const disc::FaceDofPoint& dp) {
         std::array<std::array<double, 3>, 3> fr{};
         auto& n = fr[0];
