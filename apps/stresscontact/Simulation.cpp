@@ -296,7 +296,13 @@ void Simulation::solveContact(int cycle)
     contactSolver_ = std::make_unique<contact::ActiveSetSolver>(
         *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
         params_->sublist("Contact").sublist("Newton"), comm_);
+  }
+  {
+    // Nested iteration: the previous cycle's contact state is the Newton start.
+    auto t = timers_.scope("transfer");
     contactSolver_->setInitialState(previousPoints_);
+  }
+  {
     contactSolver_->setStepCallback([this](int step, long long changes, double seconds) {
       std::ostringstream os;
       os << "Newton step " << step << ": " << changes << " points changed state";
@@ -362,14 +368,18 @@ void Simulation::estimate()
   stressEnergyError_ = -1.0;
   if (!solved_)
     return;
+  const assembly::ElasticityData data{material_, boundaryConditions_, exact_.get()};
   {
-    auto t = timers_.scope("estimate");
+    auto t = timers_.scope("reconstruct");
     estimator_ = std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);
     if (boundaryConditions_.hasContact())
       estimator_->addContribution(std::make_shared<estimator::ContactContribution>(
           *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact)));
-    estimate_ = std::make_unique<estimator::ErrorEstimate>(
-        estimator_->estimate(*solution_, {material_, boundaryConditions_, exact_.get()}));
+    estimator_->reconstruct(*solution_, data);
+  }
+  {
+    auto t = timers_.scope("estimate");
+    estimate_ = std::make_unique<estimator::ErrorEstimate>(estimator_->estimateReconstructed(*solution_, data));
   }
   std::ostringstream os;
   os << space_->numGlobalDofs() << " DOFs, eta = " << estimate_->total() << " (";
@@ -537,6 +547,42 @@ void Simulation::recordCycle(int cycle)
   for (int o : elementOwner_)
     ++owned[o];
   c["mesh"]["elements_per_rank"] = owned;
+}
+
+void Simulation::recordCost()
+{
+  const auto timings = timers_.cycleTimings();
+  const auto memory = timers_.peakMemory();
+  timers_.nextCycle();
+  auto& c = summary_->currentCycle();
+  c["timings"] = timings;
+  c["memory"] = {{"peak_rss_max_mb", memory.maxMB}, {"peak_rss_sum_mb", memory.sumMB}};
+  // The cycle's one-line summary: size, η, Newton steps, seconds per phase, peak memory.
+  std::ostringstream os;
+  os << std::setprecision(4);
+  if (solved_)
+    os << space_->numGlobalDofs() << " DOFs, ";
+  if (estimate_)
+    os << "eta " << estimate_->total() << ", ";
+  if (solved_ && contactSolver_)
+    os << contactSolver_->statistics().newtonIterations << " Newton steps, ";
+  os << std::fixed << std::setprecision(3);
+  double total = 0.0;
+  for (const auto& [phase, seconds] : timings)
+    total += seconds;
+  os << "seconds " << total << " (";
+  bool first = true;
+  for (const char* phase : {"solve", "reconstruct", "estimate", "mark", "refine", "transfer", "output"}) {
+    const auto it = timings.find(phase);
+    if (it == timings.end())
+      continue;
+    os << (first ? "" : ", ") << phase << " " << it->second;
+    first = false;
+  }
+  os << "), peak memory " << std::setprecision(0) << memory.maxMB << " MB";
+  if (comm_->getSize() > 1)
+    os << " per rank, " << memory.sumMB << " MB on all " << comm_->getSize() << " ranks";
+  progress_.report("cycle summary", os.str());
 }
 
 void Simulation::writeFields(int cycle)
@@ -710,12 +756,18 @@ void Simulation::run()
       writeFields(cycle);
       killIfAsked(cycle);
       recordCycle(cycle);
-      summary_->currentCycle()["timings"] = timers_.cycleTimings();
-      timers_.nextCycle();
+      recordCost();
       summary_->write();
       // The next cycle can start from here (a run that stops now needs no checkpoint).
-      if (stopReason_.empty())
+      if (stopReason_.empty()) {
+        const double start = Teuchos::Time::wallTime();
         writeCheckpoint(cycle);
+        // Its time is known only after the summary record was written (and copied into the
+        // checkpoint): summary.json has it from the next write on (the next cycle's, or the last).
+        double seconds = Teuchos::Time::wallTime() - start, slowest = 0.0;
+        Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(slowest));
+        summary_->currentCycle()["timings"]["checkpoint"] = slowest;
+      }
       if (!stopReason_.empty()) {
         progress_.report("stop", stopReason_);
         break;

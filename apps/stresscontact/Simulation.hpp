@@ -105,6 +105,8 @@ private:
   void mark();
   void writeFields(int cycle);
   void recordCycle(int cycle);
+  /// The cycle's timings and peak memory into summary.json, and its one-line progress summary.
+  void recordCost();
 
   // Checkpoint/restart (SimulationCheckpoint.cpp; issue #12, item 7).
   /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5.

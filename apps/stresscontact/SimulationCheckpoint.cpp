@@ -95,8 +95,8 @@ std::vector<T> narrow(const std::vector<long long>& v)
 
 void Simulation::writeCheckpoint(int cycle)
 {
-  // Not timed: it is written after the cycle's timings are recorded (it is small: 0.3 MB at
-  // 54k DOFs in 2D, docs/output.md).
+  // Timed by run() as the cycle's "checkpoint" phase, which summary.json shows from its next
+  // write on (the checkpoint copies the cycle's record before its own time is known).
   // The contact points of this cycle, every rank's in rank order: on restart rank 0 holds them
   // all, so that ActiveSetSolver::setInitialState gathers the same list whatever the rank count.
   const int d = problem_.dimension;
