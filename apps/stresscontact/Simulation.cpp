@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <numeric>
@@ -37,6 +38,7 @@
 #include <sc/io/XdmfWriter.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
+#include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "DeckParameters.hpp"
@@ -208,15 +210,25 @@ void Simulation::warnIfLargeDisplacement() const
 
 void Simulation::refineMesh()
 {
-  auto t = timers_.scope("refine");
   const long long before = mesh_->numElements();
-  if (adaptivity_.needsIndicators()) {
-    refiner_->refine(marked_);
-  } else {
-    // Uniform: dim bisections of every element (exactly ×4 in 2D), as in convergence studies.
-    refiner_->refineUniformly();
+  const Teuchos::RCP<const mesh::SimplexMesh> previous = mesh_;
+  const mesh::RefinementStep* step = nullptr;
+  {
+    auto t = timers_.scope("refine");
+    if (adaptivity_.needsIndicators()) {
+      step = &refiner_->refine(marked_);
+    } else {
+      // Uniform: dim bisections of every element (exactly ×4 in 2D), as in convergence studies.
+      step = &refiner_->refineUniformly();
+    }
   }
-  // The loop does not transfer anything between meshes yet: the history is not needed.
+  if (boundaryConditions_.hasContact()) {
+    // The contact state goes to the next mesh through the history of this step: the parent of
+    // every new boundary face (ActiveSetSolver::transferState). Then the history is forgotten,
+    // so that memory stays O(N); the parents are dropped once the state is transferred.
+    auto t = timers_.scope("transfer");
+    contactFaceParents_ = mesh::boundaryFaceParents(*previous, *refiner_->mesh(), *step);
+  }
   refiner_->forgetHistory();
   mesh_ = refiner_->mesh();
   progress_.report("refine", adaptivity_.marking + ": " + std::to_string(before) + " -> " +
@@ -298,9 +310,14 @@ void Simulation::solveContact(int cycle)
         params_->sublist("Contact").sublist("Newton"), comm_);
   }
   {
-    // Nested iteration: the previous cycle's contact state is the Newton start.
+    // Nested iteration: the previous cycle's contact state is the Newton start, carried by the
+    // refinement history (first cycle: no history, every point starts free).
     auto t = timers_.scope("transfer");
-    contactSolver_->setInitialState(previousPoints_);
+    if (const char* how = std::getenv("SC_CONTACT_TRANSFER"); how && std::string(how) == "nearest")
+      contactSolver_->setInitialState(previousPoints_);  // measurement only: the nearest-point search
+    else
+      contactSolver_->transferState(previousPoints_, contactFaceParents_);
+    contactFaceParents_ = std::vector<int>();
   }
   {
     contactSolver_->setStepCallback([this](int step, long long changes, double seconds) {
