@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <numeric>
@@ -313,10 +312,7 @@ void Simulation::solveContact(int cycle)
     // Nested iteration: the previous cycle's contact state is the Newton start, carried by the
     // refinement history (first cycle: no history, every point starts free).
     auto t = timers_.scope("transfer");
-    if (const char* how = std::getenv("SC_CONTACT_TRANSFER"); how && std::string(how) == "nearest")
-      contactSolver_->setInitialState(previousPoints_);  // measurement only: the nearest-point search
-    else
-      contactSolver_->transferState(previousPoints_, contactFaceParents_);
+    contactSolver_->transferState(previousPoints_, contactFaceParents_);
     contactFaceParents_ = std::vector<int>();
   }
   {

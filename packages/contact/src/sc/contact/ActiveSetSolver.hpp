@@ -105,11 +105,6 @@ public:
                   const Teuchos::ParameterList& newtonList, Teuchos::RCP<const Teuchos::Comm<int>> comm);
   ~ActiveSetSolver();
 
-  /// Start from the states of the points of a previous cycle (`previous`: this rank's; the
-  /// nearest previous point of any rank gives each new point its state), else all free.
-  /// Collective.
-  void setInitialState(const std::vector<ContactPoint>& previous);
-
   /// Start from the states of the previous cycle's points through the refinement history
   /// (nested iteration). `parentFace[f]`: the face of the previous mesh that contains face f of
   /// this mesh, -1 off the boundary (mesh::boundaryFaceParents of the refinement step; empty: no
