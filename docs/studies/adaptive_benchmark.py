@@ -26,9 +26,10 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 PHASES = ["solve", "reconstruct", "estimate", "mark", "refine", "transfer", "output"]
-# Everything else the cycle timed: mesh, partition, setup (spaces, graph), assemble, contact
-# setup (constraint points), errors, checkpoint.
-LOOP_OVERHEAD = ["estimate", "mark", "refine", "transfer"]  # the adaptive machinery
+# The adaptive machinery, against the solve. The table also shows setup (spaces, numbering, the
+# matrix graph) + assemble, and "other": mesh, partition, contact setup (constraint points),
+# errors, checkpoint.
+LOOP = ["reconstruct", "estimate", "mark", "refine", "transfer"]
 
 
 def cases(args):
@@ -71,33 +72,40 @@ def run(app, name, deck, sets, ranks, outdir):
     return summary, seconds, before, after, cmd
 
 
+def fmt(seconds):
+    """Seconds with 3 significant digits (a phase ranges from microseconds to minutes)."""
+    return "%.3g" % seconds
+
+
 def table(summary):
-    head = (["cycle", "DOFs", "Newton"] + PHASES +
-            ["other", "cycle total", "est+mark+refine+transfer / solve", "peak MB max / sum"])
+    head = (["cycle", "DOFs", "Newton steps"] + PHASES +
+            ["setup + assemble", "other", "cycle total",
+             "(reconstruct + estimate + mark + refine + transfer) / solve", "peak MB max / sum"])
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    totals = {p: 0.0 for p in PHASES}
-    totals["other"] = 0.0
+    keys = PHASES + ["setup + assemble", "other"]
+    totals = {k: 0.0 for k in keys}
     for c in summary["cycles"]:
-        t = c.get("timings") or {}
+        t = dict(c.get("timings") or {})
         mem = c.get("memory") or {}
-        other = sum(v for k, v in t.items() if k not in PHASES)
-        for p in PHASES:
-            totals[p] += t.get(p, 0.0)
-        totals["other"] += other
-        loop = sum(t.get(p, 0.0) for p in LOOP_OVERHEAD)
+        t["setup + assemble"] = t.get("setup", 0.0) + t.get("assemble", 0.0)
+        t["other"] = sum(v for k, v in (c.get("timings") or {}).items()
+                         if k not in PHASES and k not in ("setup", "assemble"))
+        for k in keys:
+            totals[k] += t.get(k, 0.0)
+        loop = sum(t.get(p, 0.0) for p in LOOP)
         solve = t.get("solve", 0.0)
-        cells = [str(c["cycle"]), "{:,}".format(c["dofs"]["total"]),
-                 str(c.get("nonlinear_iterations") if c.get("nonlinear_iterations") is not None else "")]
-        cells += [("%.3f" % t[p]) if p in t else "–" for p in PHASES]
-        cells += ["%.3f" % other, "%.2f" % sum(t.values()),
+        newton = c.get("nonlinear_iterations")
+        cells = [str(c["cycle"]), "{:,}".format(c["dofs"]["total"]), "" if newton is None else str(newton)]
+        cells += [fmt(t[k]) if k in t else "–" for k in keys]
+        cells += [fmt(sum(t[k] for k in keys if k in t)),
                   ("%.1f %%" % (100.0 * loop / solve)) if solve > 0 else "–",
                   "%.0f / %.0f" % (mem.get("peak_rss_max_mb", float("nan")),
                                    mem.get("peak_rss_sum_mb", float("nan")))]
         lines.append("| " + " | ".join(cells) + " |")
-    loop = sum(totals[p] for p in LOOP_OVERHEAD)
-    cells = ["all", "", ""] + ["%.2f" % totals[p] for p in PHASES] + [
-        "%.2f" % totals["other"], "%.1f" % sum(totals.values()),
-        ("%.1f %%" % (100.0 * loop / totals["solve"])) if totals["solve"] > 0 else "–", ""]
+    loop = sum(totals[p] for p in LOOP)
+    cells = (["all", "", ""] + [fmt(totals[k]) for k in keys] +
+             [fmt(sum(totals.values())),
+              ("%.1f %%" % (100.0 * loop / totals["solve"])) if totals["solve"] > 0 else "–", ""])
     lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
