@@ -25,6 +25,7 @@
 #include <sc/io/CsvWriter.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
+#include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/estimator/ContactContribution.hpp>
 #include <sc/estimator/DisplacementReconstruction.hpp>
@@ -35,6 +36,7 @@
 #include <sc/io/OutputDirectory.hpp>
 #include <sc/io/RunSummary.hpp>
 #include <sc/io/XdmfWriter.hpp>
+#include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/RefinementTransfer.hpp>
@@ -59,8 +61,21 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   if (boundaryConditions_.hasContact())
     contact_ = core::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
-  if (boundaryConditions_.hasContact())
-    contact::checkContactDegree(dim, discretization_.degree);
+  if (boundaryConditions_.hasContact()) {
+    // Curved contact faces: Mesh/Geometry order = 2 on a scene with curved parts (the contact
+    // boundary of the Hertz scenes is curved).
+    const auto& meshList = params_->sublist("Mesh");
+    const auto geometry = mesh::MeshFactory::buildGeometry(meshList, dim);
+    const bool curved = meshList.get<int>("Geometry order") == 2 && meshList.get<bool>("Project boundary") &&
+                        !geometry.is_null() && !geometry->curvedBoundaryNames().empty();
+    contact::checkContactDegree(dim, discretization_.degree, curved);
+    SC_THROW_IF(curved && contact_.frame == core::ContactFrame::BodyNormal, core::InputError,
+                "'Contact/Frame' = 'Body normal' is not available on curved contact faces "
+                "('Mesh/Geometry order' = 2): the body normal varies along a curved face, and "
+                "the constraints need one frame per face. Use 'Contact/Frame' = 'Obstacle "
+                "normal', or 'Mesh/Geometry order' = 1 for the talk's body-normal model on "
+                "straight faces (docs/contact.md).");
+  }
   {
     // The stress-block multigrid needs the nested mesh hierarchy, which the application does not
     // keep yet (issue #10): say so before any work.
@@ -244,14 +259,20 @@ void Simulation::setupElasticity()
 {
   {
     auto t = timers_.scope("setup");
+    // Mesh/Geometry order = 2: quadratic elements at the curved boundary (null otherwise).
+    auto curved = mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_);
     space_ = Teuchos::rcp(new disc::MixedElasticitySpace(mesh_, discretization_.degree,
-                                                         elementOwner_, comm_->getRank()));
+                                                         elementOwner_, comm_->getRank(), curved));
     assembler_ = std::make_unique<assembly::MixedElasticityAssembler>(space_, comm_);
   }
+  const auto* curved = space_->curvedElements();
   progress_.report("setup", std::to_string(space_->numGlobalDofs()) + " DOFs (stress " +
                                 std::to_string(space_->numStressDofs()) + ", displacement " +
                                 std::to_string(space_->numDisplacementDofs()) + ", rotation " +
-                                std::to_string(space_->numRotationDofs()) + ")");
+                                std::to_string(space_->numRotationDofs()) + ")" +
+                                (curved ? ", " + std::to_string(curved->numCurvedElements()) +
+                                              " curved (quadratic) elements"
+                                        : std::string()));
   {
     auto t = timers_.scope("assemble");
     assembler_->assemble({material_, boundaryConditions_, exact_.get()});
@@ -398,7 +419,10 @@ void Simulation::estimate()
   os << space_->numGlobalDofs() << " DOFs, eta = " << estimate_->total() << " (";
   for (std::size_t i = 0; i < estimate_->parts.size(); ++i)
     os << (i ? ", " : "") << estimate_->parts[i].first << " " << std::sqrt(estimate_->parts[i].second);
-  os << "), eta / |A^1/2 sigma_h| = " << estimate_->total() / estimate_->stressEnergyNorm;
+  // A zero solution (zero load) has η = 0 and ‖A^{1/2}σ_h‖ = 0: its relative estimate is 0.
+  const double relative =
+      estimate_->stressEnergyNorm > 0.0 ? estimate_->total() / estimate_->stressEnergyNorm : 0.0;
+  os << "), eta / |A^1/2 sigma_h| = " << relative;
   if (exact_) {
     auto t = timers_.scope("errors");
     stressEnergyError_ = assembly::computeStressEnergyError(*assembler_, *solution_, *exact_, material_, *comm_);
@@ -503,7 +527,8 @@ void Simulation::recordCycle(int cycle)
     for (const auto& p : estimate_->diagnostics)
       eta[p.first] = p.second;  // signed, in the units of η² (not a root)
     eta["stress_energy_norm"] = estimate_->stressEnergyNorm;
-    eta["relative"] = estimate_->total() / estimate_->stressEnergyNorm;
+    eta["relative"] =
+        estimate_->stressEnergyNorm > 0.0 ? estimate_->total() / estimate_->stressEnergyNorm : 0.0;
     if (stressEnergyError_ >= 0.0) {
       eta["stress_energy_error"] = stressEnergyError_;
       eta["efficiency_index"] = estimate_->total() / stressEnergyError_;
@@ -552,9 +577,16 @@ void Simulation::recordCycle(int cycle)
       progress_.report("errors", os.str());
     }
   }
+  // The measure of the discrete domain: with curved elements, that of their quadratic maps.
+  const double localMeasure = disc::ownedMeasure(*space_);
+  double measure = 0.0;
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 1, &localMeasure, &measure);
+  const auto* curved = space_->curvedElementsPtr().get();
   c["mesh"] = {{"vertices", mesh_->numVertices()},
                {"elements", mesh_->numElements()},
-               {"measure", mesh_->measure()},
+               {"measure", measure},
+               {"geometry_order", space_->geometryOrder()},
+               {"curved_elements", curved ? curved->numCurvedElements() : 0},
                {"min_angle_deg", mesh_->minAngleDeg()}};
   std::vector<long long> owned(comm_->getSize(), 0);
   for (int o : elementOwner_)

@@ -2,8 +2,9 @@
 """Hertz 2D in both contact frames (issue #11, docs/contact.md "Contact model").
 
 Runs build/apps/stresscontact/stresscontact on input/hertz2d_frictionless.xml and
-input/hertz2d.xml with local refinement towards the contact zone and writes
-docs/studies/contact_frames.csv: frame, degree, sweeps, nu, friction, DOFs, seconds, load P,
+input/hertz2d.xml with local refinement towards the contact zone, with straight-sided (Mesh/
+Geometry order = 1) and curved (2) boundary elements, and writes
+docs/studies/contact_frames.csv: geometry order, frame, degree, sweeps, nu, friction, DOFs, seconds, load P,
 half-width a (outermost and from the area), peak pressure p0, Hertz a and p0 from P, the
 staircase (max deviation of sigma_N from the line through its neighbours, inner 80%), the
 profile error against Hertz (inner 80%) and the stick half-width (Coulomb).
@@ -55,21 +56,23 @@ def main():
     if not os.path.exists(APP):
         sys.exit("build the application first (scripts/build-and-test.sh): " + APP)
     cases = []
-    for frame in ("Obstacle normal", "Body normal"):
-        for k, sweeps in ((1, 6), (1, 8), (1, 10), (2, 6), (2, 8)):
-            cases.append((frame, k, sweeps, 0.28, "None"))
-        for nu in (0.28, 0.4999):
-            cases.append((frame, 1, 8, nu, "Coulomb"))
-    header = ["frame", "degree", "sweeps", "nu", "friction", "dofs", "seconds", "P", "a",
+    for geometry in (1, 2):
+        for frame in ("Obstacle normal", "Body normal"):
+            for k, sweeps in ((1, 6), (1, 8), (1, 10), (2, 6), (2, 8)):
+                cases.append((geometry, frame, k, sweeps, 0.28, "None"))
+            for nu in (0.28, 0.4999):
+                cases.append((geometry, frame, 1, 8, nu, "Coulomb"))
+    header = ["geometry_order", "frame", "degree", "sweeps", "nu", "friction", "dofs", "seconds", "P", "a",
               "a_area", "p0", "a_hertz", "p0_hertz", "staircase_rel_p0", "profile_err_rel_p0",
               "stick_half_width", "newton_steps"]
     results = []
-    for frame, k, sweeps, nu, law in cases:
+    for geometry, frame, k, sweeps, nu, law in cases:
         deck = "hertz2d_frictionless.xml" if law == "None" else "hertz2d.xml"
-        sets = ["Adaptivity/Cycles=0", "Contact/Frame=" + frame, "Discretization/Degree=%d" % k,
+        sets = ["Mesh/Geometry order=%d" % geometry,
+                "Adaptivity/Cycles=0", "Contact/Frame=" + frame, "Discretization/Degree=%d" % k,
                 "Material/Poisson ratio=%g" % nu, "Mesh/Local refinement/Levels=%d" % sweeps,
                 "Mesh/Local refinement/Radius=0.12", "Mesh/Local refinement/Center={0, 0}"]
-        tag = "%s_k%d_s%d_nu%g_%s" % (frame.split()[0], k, sweeps, nu, law)
+        tag = "g%d_%s_k%d_s%d_nu%g_%s" % (geometry, frame.split()[0], k, sweeps, nu, law)
         cyc, rows, seconds = run(deck, sets, tag)
         c = cyc["contact"]
         P = c["force"][1]
@@ -77,7 +80,7 @@ def main():
         aH = math.sqrt(4 * P / (math.pi * estar))
         p0H = 2 * P / (math.pi * aH)
         stair, prof = profile_measures(rows, aH, p0H)
-        r = [frame, k, sweeps, nu, law, cyc["dofs"]["total"], round(seconds, 1), P,
+        r = [geometry, frame, k, sweeps, nu, law, cyc["dofs"]["total"], round(seconds, 1), P,
              c["half_width"], c["equivalent_half_width"], c["max_pressure"], aH, p0H, stair, prof,
              c["stick_half_width"], c["newton_iterations"]]
         results.append(r)

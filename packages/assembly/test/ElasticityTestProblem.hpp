@@ -3,6 +3,7 @@
 // data on some sides and tractions on the others) on a scene mesh with uniform refinements.
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include <sc/core/Parameters.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
@@ -58,6 +60,11 @@ struct VerificationSetup {
   /// Boundary conditions other than verificationBoundaryConditions (with exact = "None": a scene
   /// driven by constant data; the errors are then not computed).
   std::vector<core::BoundaryCondition> boundaryConditions;
+  /// Mesh/Geometry order: 2 = quadratic elements at the scene's curved boundary parts.
+  int geometryOrder = 1;
+  /// Replaces the exact solution named by `exact` (e.g. one whose boundary data follow the exact
+  /// geometry rather than the discrete one).
+  std::shared_ptr<const core::ExactSolution> exactOverride;
 };
 
 /// Called on every level after the solve, for tests that postprocess the solution (estimator).
@@ -90,7 +97,9 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   meshList.set("Uniform refinements", s.initialRefinements);
   auto refiner = mesh::MeshFactory::build(meshList, s.dim);
   core::Material material{s.E, s.nu};
-  auto exact = core::createExactSolution(s.exact, s.dim, material, s.wavenumber);
+  std::shared_ptr<const core::ExactSolution> exact =
+      s.exactOverride ? s.exactOverride : std::shared_ptr<const core::ExactSolution>(
+                                              core::createExactSolution(s.exact, s.dim, material, s.wavenumber));
   Teuchos::ParameterList solverList(s.solverOptions);
   solverList.set("Type", s.solver);
   auto solver = solvers::createLinearSolver(solverList);
@@ -116,7 +125,10 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
     auto m = refiner->mesh();
     auto owner = s.allOnRankZero ? std::vector<int>(m->numElements(), 0)
                                  : mesh::partitionElements(*m, *comm);
-    auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank()));
+    Teuchos::RCP<const mesh::CurvedElements> curved;
+    if (s.geometryOrder == 2)
+      curved = Teuchos::rcp(new mesh::CurvedElements(m, *refiner->geometry()));
+    auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank(), curved));
     if (s.multigrid) {
       hierarchy.push_back({assembly::stressProlongation(*previous, *space, step->elementParent, comm),
                            assembly::stressVertexPatches(*space)});

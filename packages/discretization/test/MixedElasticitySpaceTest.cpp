@@ -16,6 +16,7 @@
 #include <sc/disc/FaceDofPoints.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
@@ -246,4 +247,105 @@ TEUCHOS_UNIT_TEST(FaceDofPoints, PointValuesOnBoundaryFaces)
   TEST_EQUALITY(pts3.size(), 3u);
   for (const auto& p : pts3)
     TEST_COMPARE(std::abs(p.scale), >, 0.0);
+}
+
+// Curved (quadratic-geometry) elements, Mesh/Geometry order = 2 (issue #11, item 4).
+namespace {
+
+struct CurvedScene {
+  Teuchos::RCP<sc::mesh::BisectionRefiner> refiner;
+  Teuchos::RCP<const sc::mesh::CurvedElements> curved;
+};
+
+CurvedScene makeCurved(const std::string& source, int dim, double h, int refinements = 0)
+{
+  Teuchos::ParameterList pl;
+  pl.set("Source", source);
+  pl.set("Initial mesh size", h);
+  pl.set("Uniform refinements", refinements);
+  CurvedScene s;
+  s.refiner = sc::mesh::MeshFactory::build(pl, dim);
+  s.curved = Teuchos::rcp(new sc::mesh::CurvedElements(s.refiner->mesh(), *s.refiner->geometry()));
+  return s;
+}
+
+double measureError(const CurvedScene& s, int geometryOrder, int degree = 1)
+{
+  auto mesh = s.refiner->mesh();
+  sc::disc::MixedElasticitySpace space(mesh, degree, std::vector<int>(mesh->numElements(), 0), 0,
+                                       geometryOrder == 2 ? s.curved : Teuchos::null);
+  return std::abs(sc::disc::ownedMeasure(space) - s.refiner->geometry()->exactMeasure()) /
+         s.refiner->geometry()->exactMeasure();
+}
+
+}  // namespace
+
+// Normal continuity across the (straight) faces between curved and affine elements, and the
+// divergence theorem ∫_T div φ = ∫_∂T φ·n on curved elements: checks the non-affine Piola map,
+// the per-point normals and surface elements of the curved faces (exact identities, round-off).
+TEUCHOS_UNIT_TEST(CurvedElements, NormalContinuityAndDivergence)
+{
+  for (int dim : {2, 3}) {
+    const auto s = makeCurved(dim == 2 ? "Half disc" : "Half ball", dim, dim == 2 ? 0.3 : 0.5);
+    TEST_COMPARE(s.curved->numCurvedElements(), >, 0);
+    out << dim << "D: " << s.curved->numCurvedElements() << " curved of "
+        << s.refiner->mesh()->numElements() << " elements, max bulge " << s.curved->maxRelativeBulge() << "\n";
+    for (int k : {1, 2}) {
+      auto mesh = s.refiner->mesh();
+      sc::disc::MixedElasticitySpace space(mesh, k, std::vector<int>(mesh->numElements(), 0), 0, s.curved);
+      checkContinuity(space, out, success);
+      checkDivergenceTheorem(space, out, success);
+    }
+  }
+}
+
+// The measure of the discrete domain: O(h^2) with straight boundary faces, O(h^4) with the
+// quadratic map (analytic: the area between an arc and its P2 interpolant). Source: π/2 (half
+// disc of radius 1), 2π/3 (half ball).
+TEUCHOS_UNIT_TEST(CurvedElements, DomainMeasureConvergesAtOrderFour)
+{
+  const auto coarse = makeCurved("Half disc", 2, 0.25), fine = makeCurved("Half disc", 2, 0.25, 2);
+  const double s0 = measureError(coarse, 1), s1 = measureError(fine, 1);
+  const double c0 = measureError(coarse, 2), c1 = measureError(fine, 2);
+  out << "half disc |Ω_h|/|Ω| − 1: straight " << s0 << " → " << s1 << ", curved " << c0 << " → " << c1 << "\n";
+  // Two uniform 2D levels (×4 elements each) divide h by 4: straight ×16, curved ×256
+  // (measured 16.0 and 255).
+  TEST_COMPARE(s0 / s1, >, 12.0);
+  TEST_COMPARE(c0 / c1, >, 150.0);
+  TEST_COMPARE(c1, <, s1 / 100.0);
+  const auto ball = makeCurved("Half ball", 3, 0.5);
+  const double sb = measureError(ball, 1), cb = measureError(ball, 2);
+  out << "half ball |Ω_h|/|Ω| − 1: straight " << sb << ", curved " << cb << "\n";
+  TEST_COMPARE(cb, <, sb / 20.0);
+}
+
+// The RT face DOFs stay point values of the normal flux on curved faces, at points on the
+// curved face (within O(h^4) of the circle) with the normal of the curve there.
+TEUCHOS_UNIT_TEST(CurvedElements, FaceDofPointsOnTheCurve)
+{
+  const auto s = makeCurved("Half disc", 2, 0.3);
+  auto mesh = s.refiner->mesh();
+  for (int k : {1, 2}) {
+    sc::disc::MixedElasticitySpace space(mesh, k, std::vector<int>(mesh->numElements(), 0), 0, s.curved);
+    double worstCurved = 0.0, worstChord = 0.0, worstNormal = 0.0;
+    for (int f : mesh->boundaryFacesOf("Arc")) {
+      const int e = mesh->faceElements(f)[0];
+      int lf = 0;
+      while (mesh->elementFaces(e)[lf] != f)
+        ++lf;
+      for (const auto& p : sc::disc::stressFaceDofPoints(space, e, lf)) {
+        // Circle: centre (0, 1), radius 1.
+        const double r = std::hypot(p.x[0], p.x[1] - 1.0), rc = std::hypot(p.xAffine[0], p.xAffine[1] - 1.0);
+        worstCurved = std::max(worstCurved, std::abs(r - 1.0));
+        worstChord = std::max(worstChord, std::abs(rc - 1.0));
+        const double nx = p.x[0] / r, ny = (p.x[1] - 1.0) / r;  // exact outward normal
+        worstNormal = std::max(worstNormal, std::hypot(p.normal[0] - nx, p.normal[1] - ny));
+        TEST_COMPARE(std::abs(p.scale), >, 0.0);
+      }
+    }
+    out << "k = " << k << ": distance to the circle, curved " << worstCurved << ", chord "
+        << worstChord << "; normal error " << worstNormal << "\n";
+    TEST_COMPARE(worstCurved, <, worstChord / 20.0);
+    TEST_COMPARE(worstNormal, <, 0.01);
+  }
 }

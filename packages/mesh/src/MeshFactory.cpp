@@ -48,6 +48,14 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
     sc::core::declareBool(*p, "Project boundary", true,
                           "Project new vertices on curved boundaries (Arc, Cap) onto the exact "
                           "circle/sphere; false keeps the initial polygonal boundary");
+    sc::core::declareInt(*p, "Geometry order", 2,
+                         "2: quadratic (isoparametric) elements at the scene's curved boundaries "
+                         "(Arc, Cap), their edge midpoints on the exact circle/sphere, mapped by the "
+                         "non-affine Piola maps (docs/mesh.md, 'Curved elements'); needs Project "
+                         "boundary = true; no effect on scenes without curved parts or on Gmsh "
+                         "files. 1: straight-sided (affine) elements everywhere (the talk's "
+                         "'straight boundaries' study, with Project boundary = false)",
+                         1, 2);
     sc::core::declareReal(*p, "Radius", 1.0, "Radius R of the Half disc / Half ball", 0.0, true);
     sc::core::declareString(*p, "File", "",
                             "Gmsh .msh file (format 2.2 or 4.1) for Source = Gmsh file; relative "
@@ -315,6 +323,10 @@ Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
 {
   if (split) initial = splitElementsWithAllVerticesOnBoundary(*initial);
   checkRefinementEstimate(p, *initial, limit);
+  SC_THROW_IF(p.get<int>("Geometry order") == 2 && !p.get<bool>("Project boundary"), core::InputError,
+              "'Mesh/Geometry order' = 2 places the curved elements' nodes on the exact boundary, "
+              "but 'Mesh/Project boundary' = false keeps the initial polygon: set 'Mesh/Geometry "
+              "order' = 1 for the straight-boundaries study, or 'Mesh/Project boundary' = true.");
   auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
   for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
   MeshFactory::refineLocally(*refiner, p.sublist("Local refinement"), limit);
@@ -400,6 +412,19 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   auto geometry = buildGeometry(p, dimension);
   checkInitialEstimate(p, dimension, limit);
   return finish(p, initialMesh(p, dimension, geometry), geometry, splitBoundarySimplices, limit);
+}
+
+}  // namespace sc::mesh
+
+namespace sc::mesh {
+
+Teuchos::RCP<const CurvedElements> MeshFactory::curvedElements(const Teuchos::ParameterList& meshList,
+                                                               const BisectionRefiner& refiner)
+{
+  if (meshList.get<int>("Geometry order") < 2 || refiner.geometry().is_null() || !refiner.projectsBoundary() ||
+      refiner.geometry()->curvedBoundaryNames().empty())
+    return Teuchos::null;
+  return Teuchos::rcp(new CurvedElements(refiner.mesh(), *refiner.geometry()));
 }
 
 }  // namespace sc::mesh

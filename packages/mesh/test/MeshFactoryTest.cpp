@@ -19,14 +19,27 @@ TEUCHOS_UNIT_TEST(MeshFactory, ValidParametersHaveDefaultsAndDocs)
   auto valid = MeshFactory::getValidParameters();
   for (const std::string key : {"Source", "Initial mesh size", "Uniform refinements",
                                 "Project boundary", "Radius", "File", "Lower corner",
-                                "Upper corner", "Memory limit (GB)"}) {
+                                "Upper corner", "Memory limit (GB)", "Geometry order"}) {
     TEST_ASSERT(valid->isParameter(key));
     if (valid->isParameter(key)) TEST_ASSERT(!valid->getEntry(key).docString().empty());
   }
   TEST_ASSERT(valid->isSublist("Local refinement"));
-  TEST_EQUALITY(valid->numParams(), 10);
+  TEST_EQUALITY(valid->numParams(), 11);
   TEST_EQUALITY(valid->get<std::string>("Source"), std::string("Half disc"));
   TEST_EQUALITY(valid->get<bool>("Project boundary"), true);
+}
+
+// Mesh/Geometry order = 2 with Project boundary = false contradicts itself: an input error
+// naming both keys.
+TEUCHOS_UNIT_TEST(MeshFactory, CurvedGeometryNeedsProjection)
+{
+  Teuchos::ParameterList pl;
+  pl.set("Source", "Half disc");
+  pl.set("Geometry order", 2);
+  pl.set("Project boundary", false);
+  const std::string e = errorOf([&] { MeshFactory::build(pl, 2); });
+  TEST_ASSERT(e.find("'Mesh/Geometry order' = 2") != std::string::npos);
+  TEST_ASSERT(e.find("'Mesh/Project boundary' = false") != std::string::npos);
 }
 
 TEUCHOS_UNIT_TEST(MeshFactory, UnknownSourceListsTheChoices)

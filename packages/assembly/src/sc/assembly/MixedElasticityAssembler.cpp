@@ -275,7 +275,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
         for (int q = 0; q < fv.numPoints(); ++q) {
           double t[3] = {0, 0, 0};
           if (bc->fromExactSolution)
-            exact->traction(fv.point(q), fv.normal().data(), t);
+            exact->traction(fv.point(q), fv.normal(q).data(), t);
           else
             std::copy(bc->value.begin(), bc->value.end(), t);
           for (int l = 0; l < nF; ++l) {

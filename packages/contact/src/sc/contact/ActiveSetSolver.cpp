@@ -133,8 +133,14 @@ std::vector<double> invert(const std::vector<double>& a, int n)
 
 }  // namespace
 
-bool useBernsteinConstraints(int dim, int /*degree*/)
+bool useBernsteinConstraints(int dim, int /*degree*/, bool curvedFaces)
 {
+  // Curved faces (Mesh/Geometry order = 2): the gap is not linear along a face, and ∫ g ℓ_p
+  // can be negative next to a vertex that touches the obstacle although g ≥ 0 on the face (a
+  // zero load gave a contact force of 6% of the loaded one on the deck's mesh); B_p ≥ 0 gives
+  // G_p ≥ 0 for any g ≥ 0 (docs/contact.md "Curved contact faces").
+  if (curvedFaces)
+    return true;
   // 2D: the DOF points' dual weights ℓ_p have non-negative moments against the face's
   // barycentric coordinates (min 0 at k = 1, 0.067, 0.013, 0.017 at k = 2, 3, 4), so a
   // non-negative linear gap has a non-negative weighted gap; the point constraints are verified
@@ -145,8 +151,15 @@ bool useBernsteinConstraints(int dim, int /*degree*/)
   return dim == 3;
 }
 
-void checkContactDegree(int dim, int degree)
+void checkContactDegree(int dim, int degree, bool curvedFaces)
 {
+  // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
+  SC_THROW_IF(curvedFaces && ((dim == 2 && degree > 2) || (dim == 3 && degree > 1)), core::InputError,
+              "'Discretization/Degree' = " << degree << " with contact on curved faces "
+                  "('Mesh/Geometry order' = 2) in " << dim << "D is not verified (the Hertz tests "
+                  "cover k = " << (dim == 2 ? "1, 2" : "1") << " there). Set 'Mesh/Geometry "
+                  "order' = 1 (straight faces, verified for this degree) or a degree of "
+                  << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
   const double w = disc::minRelativeFaceDofWeight(dim, degree);
   SC_THROW_IF(w <= 1e-10, core::InputError,
               "'Discretization/Degree' = "
@@ -191,7 +204,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   for (const auto& name : contactBoundaries)
     contactIds.push_back(m.boundaryId(name));
   const bool obstacleFrame = settings.frame == core::ContactFrame::ObstacleNormal;
-  bernstein_ = useBernsteinConstraints(d, space.degree());
+  bernstein_ = useBernsteinConstraints(d, space.degree(), space.geometryOrder() == 2);
   double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
   disc::FaceValues fv(space, 2 * space.degree() + 2);
   for (int e : space.ownedElements()) {
@@ -202,33 +215,46 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         continue;
       const auto dofPoints = disc::stressFaceDofPoints(space, e, lf);
       fv.reinit(e, lf);
-      // The contact frame (n, t1[, t2]): n along the obstacle's normal (out of the body) or the
-      // face's outward normal; fv.normal() is the latter.
-      std::array<double, 3> n = fv.normal();
-      if (obstacleFrame)
-        n = obstacle_->contactNormal(dofPoints.front().x.data());
-      std::array<double, 3> t1{}, t2{};
-      if (d == 2) {
-        t1 = {-n[1], n[0], 0.0};
-      } else {
-        // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
-        int axis = 0;
-        for (int i = 1; i < 3; ++i)
-          if (std::abs(n[i]) < std::abs(n[axis]))
-            axis = i;
-        std::array<double, 3> a{0, 0, 0};
-        a[axis] = 1.0;
-        const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
-        double norm = 0.0;
-        for (int i = 0; i < 3; ++i) {
-          t1[i] = a[i] - an * n[i];
-          norm += t1[i] * t1[i];
+      // The contact frame (n, t1[, t2]) of each point: n along the obstacle's normal (out of the
+      // body) or the body's outward normal at the point (constant on a straight face, varying
+      // on a curved one).
+      SC_THROW_IF(!obstacleFrame && fv.curved(), core::InputError,
+                  "'Contact/Frame' = 'Body normal' on curved contact faces ('Mesh/Geometry order' "
+                  "= 2) is not available: the body normal varies along a curved face, and the "
+                  "constraints (Bernstein coefficients of the face's traction) need one frame per "
+                  "face. Use 'Contact/Frame' = 'Obstacle normal', or 'Mesh/Geometry order' = 1 "
+                  "for the talk's body-normal model on straight faces.");
+      auto frameAt = [&](const disc::FaceDofPoint& dp) {
+        std::array<std::array<double, 3>, 3> fr{};
+        auto& n = fr[0];
+        auto& t1 = fr[1];
+        auto& t2 = fr[2];
+        n = obstacleFrame ? obstacle_->contactNormal(dp.x.data()) : dp.normal;
+        if (d == 2) {
+          t1 = {-n[1], n[0], 0.0};
+        } else {
+          // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
+          int axis = 0;
+          for (int i = 1; i < 3; ++i)
+            if (std::abs(n[i]) < std::abs(n[axis]))
+              axis = i;
+          std::array<double, 3> a{0, 0, 0};
+          a[axis] = 1.0;
+          const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+          double norm = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            t1[i] = a[i] - an * n[i];
+            norm += t1[i] * t1[i];
+          }
+          for (double& c : t1)
+            c /= std::sqrt(norm);
+          t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
         }
-        for (double& c : t1)
-          c /= std::sqrt(norm);
-        t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
-      }
-      const double area = m.faceMeasure(f);
+        return fr;
+      };
+      // Face-wide frame for the (3D degree 2) Bernstein constraints: that of the first point.
+      const auto faceFrame = frameAt(dofPoints.front());
+      const double area = fv.measure();
       const double hF = d == 2 ? area : std::sqrt(area);
       const int nq = static_cast<int>(dofPoints.size());
       ContactFace cf;
@@ -250,7 +276,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
       cf.V.assign(static_cast<std::size_t>(nq) * nq, 0.0);
       for (int q = 0; q < nq; ++q)
         for (int pp = 0; pp < nq; ++pp)
-          cf.V[q * nq + pp] = bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].x.data(), d),
+          cf.V[q * nq + pp] = bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].xAffine.data(), d),
                                                      space.degree())
                                          : (q == pp ? 1.0 : 0.0);
       cf.Vinv = bernstein_ ? invert(cf.V, nq) : cf.V;
@@ -266,9 +292,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         } else {
           p.x = dofPoints[pp].x;
         }
-        p.n = n;
-        p.t1 = t1;
-        p.t2 = t2;
+        const auto fr = bernstein_ ? faceFrame : frameAt(dofPoints[pp]);
+        p.n = fr[0];
+        p.t1 = fr[1];
+        p.t2 = fr[2];
         p.c = penaltyFactor_ * twoMu / (hF * area);
         // The dual weight w_p = Σ_q V(q, p) ℓ_q (ℓ_q = ψ_q·n_F / s_q, the Lagrange function of the
         // normal trace at q): ℓ_p itself, or B_p. Weighted gap with face quadrature (not lumped).
@@ -276,7 +303,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
           double w = 0.0;
           for (int j = 0; j < nq; ++j)
             w += cf.V[j * nq + pp] * fv.stressNormal(dofPoints[j].localDof, q) / dofPoints[j].scale;
-          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), n.data(), cap) * w;
+          // The gap along the point's constraint direction: ν (obstacle frame), or the body's
+          // outward normal at q (body frame; constant on a straight face).
+          const double* dir = obstacleFrame || bernstein_ ? p.n.data() : fv.normal(q).data();
+          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), dir, cap) * w;
           p.weight += fv.weight(q) * w;
         }
         minRelativeWeight = std::min(minRelativeWeight, p.weight / area);

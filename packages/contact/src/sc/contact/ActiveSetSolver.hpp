@@ -83,11 +83,14 @@ struct ContactStatistics {
 /// Throws InputError naming 'Discretization/Degree' if contact at this degree and dimension is
 /// not supported: the RT_k face DOF points must have positive weights ∫_F L_p (docs/contact.md,
 /// "Degree"). Supported: k = 1..4 in 2D, k = 1, 2 in 3D. Call it before any work (--check too).
-void checkContactDegree(int dim, int degree);
+/// `curvedFaces`: the contact faces are curved (Mesh/Geometry order = 2), verified at k = 1, 2
+/// in 2D and k = 1 in 3D.
+void checkContactDegree(int dim, int degree, bool curvedFaces = false);
 
 /// Whether the contact constraints of this dimension and degree act on the Bernstein
-/// coefficients of each face's traction (non-negative dual weights) instead of the DOF points.
-bool useBernsteinConstraints(int dim, int degree);
+/// coefficients of each face's traction (non-negative dual weights) instead of the DOF points:
+/// in 3D, and on curved faces (Mesh/Geometry order = 2).
+bool useBernsteinConstraints(int dim, int degree, bool curvedFaces = false);
 
 class ActiveSetSolver {
 public:

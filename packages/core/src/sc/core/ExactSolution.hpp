@@ -34,8 +34,10 @@ public:
   virtual void rotation(const double* x, double* theta) const = 0;
   /// Body force f = −div σ.
   virtual void bodyForce(const double* x, double* f) const = 0;
-  /// Traction σ(x) n.
-  void traction(const double* x, const double* n, double* t) const;
+  /// Traction σ(x) n: the boundary data of 'Data' = 'Exact solution' traction conditions, with n
+  /// the discrete face's normal at x. Virtual so that a test can tie the data to an exact
+  /// geometry instead (ConvergenceTest: the circle's normal on a curved boundary).
+  virtual void traction(const double* x, const double* n, double* t) const;
   int numRotationComponents() const { return dim() == 2 ? 1 : 3; }
 };
 

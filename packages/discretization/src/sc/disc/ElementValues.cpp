@@ -10,7 +10,7 @@
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "sc/disc/MixedElasticitySpace.hpp"
-#include "sc/disc/detail/AffineMap.hpp"
+#include "sc/disc/detail/ElementMap.hpp"
 #include "sc/disc/detail/Intrepid2Impl.hpp"
 
 namespace sc::disc {
@@ -66,6 +66,7 @@ struct Tabulation {
 struct ElementValues::Impl {
   Tabulation tab;
   View refWeights;
+  std::unique_ptr<ElementMap> map;
   bool atPoints = false;  // tabulated at reinitAtPoints' points (no weights)
 };
 
@@ -79,6 +80,7 @@ ElementValues::ElementValues(const MixedElasticitySpace& space, int cubatureDegr
   impl_->refWeights = View("weights", nq_);
   cub->getCubature(pts, impl_->refWeights);
   impl_->tab.tabulate(si, pts);
+  impl_->map = std::make_unique<ElementMap>(space, pts);
   points_.assign(nq_ * 3, 0.0);
   weights_.assign(nq_, 0.0);
   rt_.assign(static_cast<std::size_t>(space.stressBasisSize()) * nq_ * 3, 0.0);
@@ -91,24 +93,17 @@ ElementValues::~ElementValues() = default;
 
 void ElementValues::reinitAtPoints(int e, const std::vector<double>& physicalPoints)
 {
-  const auto& m = space_.mesh();
   const auto& si = space_.impl();
   const int d = space_.dim();
   const int n = static_cast<int>(physicalPoints.size() / 3);
-  AffineMap F(m, e);
-  // x̂ = J⁻¹ (x − x0)
-  double inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  F.inverse(d, inv);
+  const auto xh = ElementMap::toReference(space_, e, physicalPoints);
   View pts("points", n, d);
   for (int q = 0; q < n; ++q)
-    for (int i = 0; i < d; ++i) {
-      double v = 0.0;
-      for (int j = 0; j < d; ++j)
-        v += inv[i][j] * (physicalPoints[q * 3 + j] - F.x0[j]);
-      pts(q, i) = v;
-    }
+    for (int i = 0; i < d; ++i)
+      pts(q, i) = xh[q * d + i];
   nq_ = n;
   impl_->tab.tabulate(si, pts);
+  impl_->map = std::make_unique<ElementMap>(space_, pts);
   impl_->atPoints = true;
   points_.assign(static_cast<std::size_t>(n) * 3, 0.0);
   weights_.assign(n, 0.0);
@@ -131,27 +126,31 @@ void ElementValues::fill(int e)
   const auto& m = space_.mesh();
   const auto& si = space_.impl();
   const int d = space_.dim(), nRT = space_.stressBasisSize(), nP = space_.displacementBasisSize();
-  AffineMap F(m, e);
-  measure_ = F.det / (d == 2 ? 2.0 : 6.0);
+  ElementMap& F = *impl_->map;
+  F.reinit(e);
   Tabulation& t = impl_->tab;
   t.orient(si, m.elementVertices(e));
+  // Affine: |T| = det J / d!; curved: ∫ det J (the cubature is exact for the P2 map's det J).
+  measure_ = F.curved() ? 0.0 : F.det(0) / (d == 2 ? 2.0 : 6.0);
   for (int q = 0; q < nq_; ++q) {
-    double xh[3] = {0, 0, 0};
-    for (int i = 0; i < d; ++i)
-      xh[i] = t.refPoints(q, i);
-    F.map(xh, d, &points_[q * 3]);
-    weights_[q] = impl_->atPoints ? 0.0 : impl_->refWeights(q) * F.det;
+    for (int i = 0; i < 3; ++i)
+      points_[q * 3 + i] = F.x(q)[i];
+    weights_[q] = impl_->atPoints ? 0.0 : impl_->refWeights(q) * F.det(q);
+    if (F.curved())
+      measure_ += weights_[q];
   }
-  // Contravariant Piola: φ = J φ̂ / det J, div φ = div̂ φ̂ / det J.
+  // Contravariant Piola: φ = J φ̂ / det J, div φ = div̂ φ̂ / det J (also for the quadratic map, with
+  // J and det J at each point).
   for (int a = 0; a < nRT; ++a)
     for (int q = 0; q < nq_; ++q) {
+      const double* J = F.jacobian(q);
       for (int i = 0; i < d; ++i) {
         double v = 0.0;
         for (int j = 0; j < d; ++j)
-          v += F.J[i][j] * t.rtOr(0, a, q, j);
-        rt_[(a * nq_ + q) * 3 + i] = v / F.det;
+          v += J[3 * i + j] * t.rtOr(0, a, q, j);
+        rt_[(a * nq_ + q) * 3 + i] = v / F.det(q);
       }
-      rtDiv_[a * nq_ + q] = t.rtDivOr(0, a, q) / F.det;
+      rtDiv_[a * nq_ + q] = t.rtDivOr(0, a, q) / F.det(q);
     }
   // DP_k is element-local: the unoriented reference basis serves; CP_k needs the oriented one.
   for (int a = 0; a < nP; ++a)
@@ -164,6 +163,7 @@ void ElementValues::fill(int e)
 // ------------------------------------------------------------------------------- FaceValues
 struct FaceValues::Impl {
   std::vector<Tabulation> sides;  // one per Intrepid2 side ordinal
+  std::vector<std::unique_ptr<ElementMap>> maps;  // one per side
   View paramWeights;
   double paramMeasure = 0.0;
 };
@@ -186,9 +186,11 @@ FaceValues::FaceValues(const MixedElasticitySpace& space, int cubatureDegree)
     View refPts("refPts", nq_, d);
     Intrepid2::CellTools<Device>::mapToReferenceSubcell(refPts, param, d - 1, s, si.topology);
     impl_->sides[s].tabulate(si, refPts);
+    impl_->maps.push_back(std::make_unique<ElementMap>(space, refPts));
   }
   points_.assign(nq_ * 3, 0.0);
   weights_.assign(nq_, 0.0);
+  normals_.assign(nq_, {0.0, 0.0, 0.0});
   rt_.assign(static_cast<std::size_t>(space.stressBasisSize()) * nq_ * 3, 0.0);
   dp_.assign(static_cast<std::size_t>(space.displacementBasisSize()) * nq_, 0.0);
   cp_.assign(static_cast<std::size_t>(space.rotationBasisSize()) * nq_, 0.0);
@@ -201,30 +203,46 @@ void FaceValues::reinit(int e, int localFace)
   const auto& m = space_.mesh();
   const auto& si = space_.impl();
   const int d = space_.dim(), nRT = space_.stressBasisSize(), nP = space_.displacementBasisSize();
-  AffineMap F(m, e);
-  Tabulation& t = impl_->sides[si.meshFaceToSide[localFace]];
+  const int side = si.meshFaceToSide[localFace];
+  Tabulation& t = impl_->sides[side];
+  ElementMap& F = *impl_->maps[side];
+  F.reinit(e);
   t.orient(si, m.elementVertices(e));
   const int f = m.elementFaces(e)[localFace];
-  const auto n = m.faceNormal(f);
-  const double sign = m.faceElements(f)[0] == e ? 1.0 : -1.0;
-  for (int i = 0; i < 3; ++i)
-    normal_[i] = sign * n[i];
-  const double scale = m.faceMeasure(f) / impl_->paramMeasure;
-  for (int q = 0; q < nq_; ++q) {
-    double xh[3] = {0, 0, 0};
-    for (int i = 0; i < d; ++i)
-      xh[i] = t.refPoints(q, i);
-    F.map(xh, d, &points_[q * 3]);
-    weights_[q] = impl_->paramWeights(q) * scale;
+  curved_ = F.curved();
+  if (!curved_) {
+    const auto n = m.faceNormal(f);
+    const double sign = m.faceElements(f)[0] == e ? 1.0 : -1.0;
+    measure_ = m.faceMeasure(f);
+    const double scale = measure_ / impl_->paramMeasure;
+    for (int q = 0; q < nq_; ++q) {
+      for (int i = 0; i < 3; ++i)
+        normals_[q][i] = sign * n[i];
+      weights_[q] = impl_->paramWeights(q) * scale;
+    }
+  } else {
+    // Curved: the normal and the surface element vary along the face.
+    measure_ = 0.0;
+    for (int q = 0; q < nq_; ++q) {
+      double stretch = 0.0;
+      F.sideFrame(q, side, normals_[q], stretch);
+      weights_[q] = impl_->paramWeights(q) * stretch;
+      measure_ += weights_[q];
+    }
   }
+  for (int q = 0; q < nq_; ++q)
+    for (int i = 0; i < 3; ++i)
+      points_[q * 3 + i] = F.x(q)[i];
   for (int a = 0; a < nRT; ++a)
-    for (int q = 0; q < nq_; ++q)
+    for (int q = 0; q < nq_; ++q) {
+      const double* J = F.jacobian(q);
       for (int i = 0; i < d; ++i) {
         double v = 0.0;
         for (int j = 0; j < d; ++j)
-          v += F.J[i][j] * t.rtOr(0, a, q, j);
-        rt_[(a * nq_ + q) * 3 + i] = v / F.det;
+          v += J[3 * i + j] * t.rtOr(0, a, q, j);
+        rt_[(a * nq_ + q) * 3 + i] = v / F.det(q);
       }
+    }
   for (int a = 0; a < nP; ++a)
     for (int q = 0; q < nq_; ++q) {
       dp_[a * nq_ + q] = t.pkRef(a, q);
@@ -236,8 +254,23 @@ double FaceValues::stressNormal(int a, int q) const
 {
   double v = 0.0;
   for (int i = 0; i < space_.dim(); ++i)
-    v += stress(a, q, i) * normal_[i];
+    v += stress(a, q, i) * normals_[q][i];
   return v;
+}
+
+double ownedMeasure(const MixedElasticitySpace& space)
+{
+  ElementValues ev(space, 4);  // exact for det J of the quadratic map (degree 2 in 2D, 3 in 3D)
+  double sum = 0.0;
+  for (int e : space.ownedElements()) {
+    if (space.isCurved(e)) {
+      ev.reinit(e);
+      sum += ev.measure();
+    } else {
+      sum += space.mesh().elementMeasure(e);
+    }
+  }
+  return sum;
 }
 
 }  // namespace sc::disc

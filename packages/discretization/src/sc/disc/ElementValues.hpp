@@ -3,7 +3,8 @@
 // OrientationTools) and mapped (contravariant Piola for RT: φ = J φ̂ / det J, div φ = div̂ φ̂ / det J;
 // identity for the P_k bases), on an element (ElementValues) or on one face of it (FaceValues).
 // Cubature from Intrepid2's DefaultCubatureFactory, exact for polynomials of the given degree.
-// Elements are affine (straight-sided simplices), so J is constant per element.
+// Affine elements have one J; curved elements (Mesh/Geometry order = 2, quadratic map) have J,
+// det J, the face normal and the surface element at each point (detail/ElementMap.hpp).
 #include <array>
 #include <memory>
 #include <vector>
@@ -56,10 +57,13 @@ public:
 
   int numPoints() const { return nq_; }
   const double* point(int q) const { return &points_[q * 3]; }
-  /// Reference weight scaled to the physical face measure.
+  /// Reference weight times the physical surface element.
   double weight(int q) const { return weights_[q]; }
-  /// Unit normal pointing out of the element.
-  const std::array<double, 3>& normal() const { return normal_; }
+  /// Unit normal at q pointing out of the element (constant on a straight face).
+  const std::array<double, 3>& normal(int q) const { return normals_[q]; }
+  /// Length/area of the face (of the curved face on a curved element).
+  double measure() const { return measure_; }
+  bool curved() const { return curved_; }
   double stress(int a, int q, int c) const { return rt_[(a * nq_ + q) * 3 + c]; }
   /// φ_a · n at q.
   double stressNormal(int a, int q) const;
@@ -73,7 +77,13 @@ private:
   std::unique_ptr<Impl> impl_;
   int nq_;
   std::vector<double> points_, weights_, rt_, dp_, cp_;
-  std::array<double, 3> normal_{};
+  std::vector<std::array<double, 3>> normals_;
+  double measure_ = 0.0;
+  bool curved_ = false;
 };
+
+/// Σ |T| over this rank's elements (curved elements by quadrature of det J): the area/volume of
+/// the discrete domain once summed over ranks.
+double ownedMeasure(const MixedElasticitySpace& space);
 
 }  // namespace sc::disc

@@ -13,6 +13,7 @@
 #include "sc/disc/ElementValues.hpp"
 #include "sc/disc/MixedElasticitySpace.hpp"
 #include "sc/disc/detail/AffineMap.hpp"
+#include "sc/disc/detail/ElementMap.hpp"
 #include "sc/disc/detail/Intrepid2Impl.hpp"
 
 namespace sc::disc {
@@ -43,25 +44,37 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
 
   const AffineMap F(m, e);
   const int f = m.elementFaces(e)[lf];
-  auto normal = m.faceNormal(f);
+  auto faceNormal = m.faceNormal(f);
   if (m.faceElements(f)[0] != e)
-    for (double& c : normal)
+    for (double& c : faceNormal)
       c = -c;
+  // The map at the lattice points: J, det J and the outward normal per point (constant on an
+  // affine element, where this is the arithmetic of AffineMap).
+  ElementMap map(space, ref);
+  map.reinit(e);
+  std::vector<std::array<double, 3>> normals(np, faceNormal);
+  if (map.curved())
+    for (int l = 0; l < np; ++l) {
+      double stretch = 0.0;
+      map.sideFrame(l, side, normals[l], stretch);
+    }
 
   // T(l, j) = (φ_j·n)(p_l) for the face DOFs.
   const int nF = static_cast<int>(faceDofs.size());
   std::vector<double> T(static_cast<std::size_t>(np) * nF);
-  for (int l = 0; l < np; ++l)
+  for (int l = 0; l < np; ++l) {
+    const double* J = map.jacobian(l);
     for (int j = 0; j < nF; ++j) {
       double flux = 0.0;
       for (int i = 0; i < d; ++i) {
         double phi = 0.0;
         for (int k = 0; k < d; ++k)
-          phi += F.J[i][k] * oriented(0, faceDofs[j], l, k);
-        flux += phi / F.det * normal[i];
+          phi += J[3 * i + k] * oriented(0, faceDofs[j], l, k);
+        flux += phi / map.det(l) * normals[l][i];
       }
       T[l * nF + j] = flux;
     }
+  }
   std::vector<FaceDofPoint> points(nF);
   std::vector<bool> used(nF, false);
   for (int l = 0; l < np; ++l) {
@@ -79,10 +92,12 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
     FaceDofPoint& p = points[best];
     p.localDof = faceDofs[best];
     p.scale = s;
+    p.normal = normals[l];
     for (int i = 0; i < d; ++i) {
-      p.x[i] = F.x0[i];
+      p.xAffine[i] = F.x0[i];
       for (int k = 0; k < d; ++k)
-        p.x[i] += F.J[i][k] * ref(l, k);
+        p.xAffine[i] += F.J[i][k] * ref(l, k);
+      p.x[i] = map.x(l)[i];
     }
   }
   return points;

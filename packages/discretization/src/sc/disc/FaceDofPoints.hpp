@@ -5,6 +5,8 @@
 // for each face DOF, its physical point p_j and s_j = (φ_j·n)(p_j) with the outward unit normal
 // n of the element (sign included), after checking (φ_j·n)(p_l) = 0 for l ≠ j. An element's
 // traction at p_j is then t_i(p_j) = s_j c_{i,j} with c_{i,j} the coefficient of row i's DOF j.
+// On a curved element (quadratic map) the Piola map keeps the DOFs point values of the normal
+// flux (φ·n dS = φ̂·n̂ dŜ), with n and s_j taken at each point.
 #include <array>
 #include <vector>
 
@@ -14,7 +16,9 @@ class MixedElasticitySpace;
 
 struct FaceDofPoint {
   int localDof = -1;            ///< element-local RT index (within one row block)
-  std::array<double, 3> x{};    ///< physical point p_j
+  std::array<double, 3> x{};    ///< physical point p_j (on the curved face of a curved element)
+  std::array<double, 3> xAffine{};  ///< the same reference point on the straight face (chord)
+  std::array<double, 3> normal{};   ///< outward unit normal n(p_j) (varies on a curved face)
   double scale = 0.0;           ///< s_j = (φ_j·n)(p_j), outward n
 };
 

@@ -11,6 +11,7 @@
 #include <Shards_CellTopology.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "sc/disc/detail/Intrepid2Impl.hpp"
@@ -57,8 +58,9 @@ Intrepid2::Orientation MixedElasticitySpace::Impl::orientation(const int* global
 }
 
 MixedElasticitySpace::MixedElasticitySpace(Teuchos::RCP<const mesh::SimplexMesh> mesh, int degree,
-                                           std::vector<int> elementOwner, int rank)
-  : mesh_(std::move(mesh)), dim_(mesh_->dim()), degree_(degree), rank_(rank),
+                                           std::vector<int> elementOwner, int rank,
+                                           Teuchos::RCP<const mesh::CurvedElements> curved)
+  : mesh_(std::move(mesh)), curved_(std::move(curved)), dim_(mesh_->dim()), degree_(degree), rank_(rank),
     elementOwner_(std::move(elementOwner))
 {
   SC_THROW_IF(degree < 1, core::InputError,
@@ -66,6 +68,8 @@ MixedElasticitySpace::MixedElasticitySpace(Teuchos::RCP<const mesh::SimplexMesh>
   SC_THROW_IF(static_cast<int>(elementOwner_.size()) != mesh_->numElements(), core::InternalError,
               "partition has " << elementOwner_.size() << " entries for "
                                << mesh_->numElements() << " elements");
+  SC_THROW_IF(!curved_.is_null() && &curved_->mesh() != mesh_.get(), core::InternalError,
+              "MixedElasticitySpace: the curved geometry belongs to another mesh");
   impl_ = std::make_unique<Impl>(dim_, degree_);
   nRT_ = impl_->rt->getCardinality();
   nDP_ = nCP_ = impl_->pk->getCardinality();
@@ -188,4 +192,8 @@ void MixedElasticitySpace::numberDofs()
   overlapDofs_.erase(std::unique(overlapDofs_.begin(), overlapDofs_.end()), overlapDofs_.end());
 }
 
+}  // namespace sc::disc
+
+namespace sc::disc {
+bool MixedElasticitySpace::isCurved(int e) const { return !curved_.is_null() && curved_->isCurved(e); }
 }  // namespace sc::disc

@@ -18,6 +18,7 @@
 
 namespace sc::mesh {
 class SimplexMesh;
+class CurvedElements;
 }
 
 namespace sc::disc {
@@ -25,8 +26,11 @@ namespace sc::disc {
 class MixedElasticitySpace {
 public:
   /// `elementOwner`: owning rank of every element (METIS partition); `rank`: this rank.
+  /// `curved` (Mesh/Geometry order = 2): the quadratic geometry of the elements at curved
+  /// boundaries, on which the bases are mapped by the non-affine Piola maps; null: all affine.
   MixedElasticitySpace(Teuchos::RCP<const mesh::SimplexMesh> mesh, int degree,
-                       std::vector<int> elementOwner, int rank);
+                       std::vector<int> elementOwner, int rank,
+                       Teuchos::RCP<const mesh::CurvedElements> curved = Teuchos::null);
   ~MixedElasticitySpace();
   MixedElasticitySpace(const MixedElasticitySpace&) = delete;
   MixedElasticitySpace& operator=(const MixedElasticitySpace&) = delete;
@@ -37,6 +41,13 @@ public:
   int degree() const { return degree_; }
   int rank() const { return rank_; }
   int numRotationComponents() const { return dim_ == 2 ? 1 : 3; }
+  /// The quadratic boundary geometry, or null (all elements affine).
+  const mesh::CurvedElements* curvedElements() const { return curved_.get(); }
+  Teuchos::RCP<const mesh::CurvedElements> curvedElementsPtr() const { return curved_; }
+  /// True if element e has a curved (quadratic) map.
+  bool isCurved(int e) const;
+  /// 1 (all elements affine) or 2 (quadratic geometry at curved boundaries).
+  int geometryOrder() const { return curved_.is_null() ? 1 : 2; }
 
   // Element-local sizes and offsets.
   int stressBasisSize() const { return nRT_; }        ///< RT_k functions per row
@@ -81,6 +92,7 @@ private:
   void numberDofs();
 
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;
+  Teuchos::RCP<const mesh::CurvedElements> curved_;
   int dim_, degree_, rank_;
   std::unique_ptr<Impl> impl_;
   int nRT_ = 0, nDP_ = 0, nCP_ = 0, nFaceRT_ = 0;

@@ -56,12 +56,12 @@ void ContactContribution::addTo(ErrorEstimate& est, assembly::ElementSolution& s
         gathered = true;
       }
       fv.reinit(e, lf);
-      const auto& nF = fv.normal();
       const double hF = d == 2 ? m.faceMeasure(f) : std::sqrt(m.faceMeasure(f));
       double compl_ = 0.0, pen = 0.0, tension = 0.0, fric = 0.0, signedNormal = 0.0;
       for (int q = 0; q < fv.numPoints(); ++q) {
         const double* x = fv.point(q);
         const double w = fv.weight(q);
+        const auto& nF = fv.normal(q);  // the body's outward normal (varies on a curved face)
         const std::array<double, 3> n = obstacleFrame ? obstacle->contactNormal(x) : nF;
         const double g = obstacle->gap(x, n.data(), cap);
         double sigma[9], t[3] = {0, 0, 0}, u[3] = {0, 0, 0};

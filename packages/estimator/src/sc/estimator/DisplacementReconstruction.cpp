@@ -19,30 +19,20 @@
 #include <sc/core/Error.hpp>
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
-#include <sc/disc/detail/AffineMap.hpp>
+#include <sc/disc/detail/ElementMap.hpp>
 #include <sc/disc/detail/Intrepid2Impl.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
 namespace sc::estimator {
 namespace {
 
-using disc::AffineMap;
 using disc::Basis;
 using disc::Device;
+using disc::ElementMap;
 using disc::View;
 using GO = Tpetra::Map<>::global_ordinal_type;
 constexpr int kMaxDegree = 5;
 using NodeKey = std::array<int, kMaxDegree>;  // sorted vertex ids, each repeated p·λ_j times
-
-// J^{-T} of an affine map (d = 2, 3): physical gradient = J^{-T} reference gradient.
-void inverseTranspose(const AffineMap& F, int d, double G[3][3])
-{
-  double inv[3][3];
-  F.inverse(d, inv);
-  for (int i = 0; i < d; ++i)
-    for (int j = 0; j < d; ++j)
-      G[i][j] = inv[j][i];
-}
 
 }  // namespace
 
@@ -53,6 +43,7 @@ struct DisplacementReconstruction::Impl {
   View cubPoints, cubWeights;               // element cubature (reference)
   View values, grads;                       // (n, nq), (n, nq, d) at the cubature points
   int cubatureDegree = 0;
+  std::unique_ptr<ElementMap> cubatureMap;  // the element map at the cubature points (valuesAt)
 
   std::vector<long long> elementNodes;  // all elements, n global node ids each
   std::vector<int> overlapIndex;        // global node -> index among this rank's nodes, or -1
@@ -174,18 +165,18 @@ DisplacementReconstruction::DisplacementReconstruction(const disc::MixedElastici
   I.exporter = Teuchos::rcp(new Tpetra::Export<>(I.overlapMap, I.ownedMap));
   I.importer = Teuchos::rcp(new Tpetra::Import<>(I.ownedMap, I.overlapMap));
 
-  // Node coordinates on the element's straight geometry (chord points on curved boundaries).
+  // Node coordinates on the element's geometry (the same as σ_h's: straight, or the quadratic
+  // map of a curved element, on which u^R is isoparametric-mapped like the stress).
   I.coords.assign(3 * I.overlapNodes.size(), 0.0);
   View dofCoords("dofCoords", I.n, d);
   I.basis->getDofCoords(dofCoords);
+  ElementMap nodeMap(space, dofCoords);
   for (int e : space.ownedElements()) {
-    AffineMap F(m, e);
+    nodeMap.reinit(e);
     for (int a = 0; a < I.n; ++a) {
-      double xh[3] = {0, 0, 0};
-      for (int j = 0; j < d; ++j)
-        xh[j] = dofCoords(a, j);
       const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * I.n + a]];
-      F.map(xh, d, &I.coords[3 * l]);
+      for (int i = 0; i < 3; ++i)
+        I.coords[3 * l + i] = nodeMap.x(a)[i];
     }
   }
 }
@@ -216,20 +207,22 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
   Teuchos::SerialDenseMatrix<int, double> K(n + 1, n + 1), B(n + 1, d);
   std::vector<double> grad(static_cast<std::size_t>(n) * nq * d);
   assembly::PointValues v;
+  ElementMap F(S, I.cubPoints);
   for (int e : S.ownedElements()) {
     ev.reinit(e);
     solution.gather(e);
-    AffineMap F(m, e);
-    double G[3][3];
-    inverseTranspose(F, d, G);
-    for (int a = 0; a < n; ++a)
-      for (int q = 0; q < nq; ++q)
+    F.reinit(e);
+    for (int q = 0; q < nq; ++q) {
+      double G[3][3];
+      F.inverseTranspose(q, G);
+      for (int a = 0; a < n; ++a)
         for (int i = 0; i < d; ++i) {
           double s = 0.0;
           for (int j = 0; j < d; ++j)
             s += G[i][j] * I.grads(a, q, j);
           grad[(static_cast<std::size_t>(a) * nq + q) * d + i] = s;
         }
+    }
     K.putScalar(0.0);
     B.putScalar(0.0);
     for (int q = 0; q < nq; ++q) {
@@ -336,31 +329,30 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
 void DisplacementReconstruction::valuesAt(int e, const disc::ElementValues& ev, std::vector<double>& u,
                                           std::vector<double>& grad) const
 {
-  const auto& I = *impl_;
+  auto& I = *impl_;  // the cached cubature map is filled on first use
   const int d = space_.dim(), n = I.n, nq = ev.numPoints();
   SC_THROW_IF(nq != static_cast<int>(I.cubPoints.extent(0)), core::InternalError,
               "DisplacementReconstruction::valuesAt needs ElementValues of degree cubatureDegree()");
-  AffineMap F(space_.mesh(), e);
+  if (!I.cubatureMap)
+    I.cubatureMap = std::make_unique<ElementMap>(space_, I.cubPoints);
+  ElementMap& F = *I.cubatureMap;
+  F.reinit(e);
   {
     // The points of `ev` must be this tabulation's (same cubature rule, same order).
-    double xh[3] = {0, 0, 0}, x[3];
-    for (int j = 0; j < d; ++j)
-      xh[j] = I.cubPoints(0, j);
-    F.map(xh, d, x);
     double dist = 0.0;
     for (int j = 0; j < d; ++j)
-      dist += std::abs(x[j] - ev.point(0)[j]);
+      dist += std::abs(F.x(0)[j] - ev.point(0)[j]);
     SC_THROW_IF(dist > 1e-10 * space_.mesh().elementDiameter(e), core::InternalError,
                 "DisplacementReconstruction::valuesAt: ElementValues not reinit'ed on element " << e);
   }
-  double G[3][3];
-  inverseTranspose(F, d, G);
   u.assign(static_cast<std::size_t>(nq) * d, 0.0);
   grad.assign(static_cast<std::size_t>(nq) * d * d, 0.0);
   for (int a = 0; a < n; ++a) {
     const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * n + a]];
     const double* c = &I.values_[static_cast<std::size_t>(l) * d];
     for (int q = 0; q < nq; ++q) {
+      double G[3][3];
+      F.inverseTranspose(q, G);
       double g[3] = {0, 0, 0};
       for (int i = 0; i < d; ++i)
         for (int j = 0; j < d; ++j)
@@ -378,17 +370,10 @@ void DisplacementReconstruction::valueAt(int e, const double* x, double* u) cons
 {
   const auto& I = *impl_;
   const int d = space_.dim(), n = I.n;
-  AffineMap F(space_.mesh(), e);
-  double G[3][3];
-  inverseTranspose(F, d, G);
-  // x̂ = J^{-1}(x − x0) = G^T (x − x0).
+  const auto ref = ElementMap::toReference(space_, e, std::vector<double>{x[0], x[1], d == 3 ? x[2] : 0.0});
   View xh("xh", 1, d), vals("vals", n, 1);
-  for (int j = 0; j < d; ++j) {
-    double s = 0.0;
-    for (int i = 0; i < d; ++i)
-      s += G[i][j] * (x[i] - F.x0[i]);
-    xh(0, j) = s;
-  }
+  for (int j = 0; j < d; ++j)
+    xh(0, j) = ref[j];
   I.basis->getValues(vals, xh, Intrepid2::OPERATOR_VALUE);
   for (int i = 0; i < d; ++i)
     u[i] = 0.0;

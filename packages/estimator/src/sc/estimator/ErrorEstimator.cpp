@@ -148,7 +148,7 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
             osc += fv.weight(q) * twoMu / hF * std::pow(value[i] - u[i], 2);
         } else {
           if (bc->fromExactSolution)
-            exact->traction(x, fv.normal().data(), value);
+            exact->traction(x, fv.normal(q).data(), value);
           else
             std::copy(bc->value.begin(), bc->value.end(), value);
           double sigma[9];
@@ -156,7 +156,7 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
           for (int i = 0; i < d; ++i) {
             double sn = 0.0;
             for (int j = 0; j < d; ++j)
-              sn += sigma[i * d + j] * fv.normal()[j];
+              sn += sigma[i * d + j] * fv.normal(q)[j];
             osc += fv.weight(q) * hF * std::pow(value[i] - sn, 2) / twoMu;
           }
         }

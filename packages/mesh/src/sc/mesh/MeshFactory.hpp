@@ -4,6 +4,7 @@
 // loop keeps.
 
 #include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/Geometry.hpp>
 #include <sc/mesh/ResourceEstimate.hpp>
 
@@ -63,6 +64,11 @@ public:
   /// from `initial` (counts its selected elements; Center/Boundary must be valid).
   static MeshEstimate estimateRefinement(const Teuchos::ParameterList& meshList,
                                          const SimplexMesh& initial);
+
+  /// The quadratic geometry of the refiner's current mesh for Mesh/Geometry order = 2 (validated
+  /// list), or null: order 1, a scene without curved parts, a Gmsh file, or no projection.
+  static Teuchos::RCP<const CurvedElements> curvedElements(const Teuchos::ParameterList& meshList,
+                                                           const BisectionRefiner& refiner);
 
   /// The scene geometry of a validated list (null for "Gmsh file").
   static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,
