@@ -39,6 +39,7 @@
 #include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
+#include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "DeckParameters.hpp"
@@ -223,15 +224,25 @@ void Simulation::warnIfLargeDisplacement() const
 
 void Simulation::refineMesh()
 {
-  auto t = timers_.scope("refine");
   const long long before = mesh_->numElements();
-  if (adaptivity_.needsIndicators()) {
-    refiner_->refine(marked_);
-  } else {
-    // Uniform: dim bisections of every element (exactly ×4 in 2D), as in convergence studies.
-    refiner_->refineUniformly();
+  const Teuchos::RCP<const mesh::SimplexMesh> previous = mesh_;
+  const mesh::RefinementStep* step = nullptr;
+  {
+    auto t = timers_.scope("refine");
+    if (adaptivity_.needsIndicators()) {
+      step = &refiner_->refine(marked_);
+    } else {
+      // Uniform: dim bisections of every element (exactly ×4 in 2D), as in convergence studies.
+      step = &refiner_->refineUniformly();
+    }
   }
-  // The loop does not transfer anything between meshes yet: the history is not needed.
+  if (boundaryConditions_.hasContact()) {
+    // The contact state goes to the next mesh through the history of this step: the parent of
+    // every new boundary face (ActiveSetSolver::transferState). Then the history is forgotten,
+    // so that memory stays O(N); the parents are dropped once the state is transferred.
+    auto t = timers_.scope("transfer");
+    contactFaceParents_ = mesh::boundaryFaceParents(*previous, *refiner_->mesh(), *step);
+  }
   refiner_->forgetHistory();
   mesh_ = refiner_->mesh();
   progress_.report("refine", adaptivity_.marking + ": " + std::to_string(before) + " -> " +
@@ -317,7 +328,15 @@ void Simulation::solveContact(int cycle)
     contactSolver_ = std::make_unique<contact::ActiveSetSolver>(
         *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
         params_->sublist("Contact").sublist("Newton"), comm_);
-    contactSolver_->setInitialState(previousPoints_);
+  }
+  {
+    // Nested iteration: the previous cycle's contact state is the Newton start, carried by the
+    // refinement history (first cycle: no history, every point starts free).
+    auto t = timers_.scope("transfer");
+    contactSolver_->transferState(previousPoints_, contactFaceParents_);
+    contactFaceParents_ = std::vector<int>();
+  }
+  {
     contactSolver_->setStepCallback([this](int step, long long changes, double seconds) {
       std::ostringstream os;
       os << "Newton step " << step << ": " << changes << " points changed state";
@@ -383,14 +402,18 @@ void Simulation::estimate()
   stressEnergyError_ = -1.0;
   if (!solved_)
     return;
+  const assembly::ElasticityData data{material_, boundaryConditions_, exact_.get()};
   {
-    auto t = timers_.scope("estimate");
+    auto t = timers_.scope("reconstruct");
     estimator_ = std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);
     if (boundaryConditions_.hasContact())
       estimator_->addContribution(std::make_shared<estimator::ContactContribution>(
           *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact)));
-    estimate_ = std::make_unique<estimator::ErrorEstimate>(
-        estimator_->estimate(*solution_, {material_, boundaryConditions_, exact_.get()}));
+    estimator_->reconstruct(*solution_, data);
+  }
+  {
+    auto t = timers_.scope("estimate");
+    estimate_ = std::make_unique<estimator::ErrorEstimate>(estimator_->estimateReconstructed(*solution_, data));
   }
   std::ostringstream os;
   os << space_->numGlobalDofs() << " DOFs, eta = " << estimate_->total() << " (";
@@ -571,6 +594,42 @@ void Simulation::recordCycle(int cycle)
   c["mesh"]["elements_per_rank"] = owned;
 }
 
+void Simulation::recordCost()
+{
+  const auto timings = timers_.cycleTimings();
+  const auto memory = timers_.peakMemory();
+  timers_.nextCycle();
+  auto& c = summary_->currentCycle();
+  c["timings"] = timings;
+  c["memory"] = {{"peak_rss_max_mb", memory.maxMB}, {"peak_rss_sum_mb", memory.sumMB}};
+  // The cycle's one-line summary: size, η, Newton steps, seconds per phase, peak memory.
+  std::ostringstream os;
+  os << std::setprecision(4);
+  if (solved_)
+    os << space_->numGlobalDofs() << " DOFs, ";
+  if (estimate_)
+    os << "eta " << estimate_->total() << ", ";
+  if (solved_ && contactSolver_)
+    os << contactSolver_->statistics().newtonIterations << " Newton steps, ";
+  os << std::fixed << std::setprecision(3);
+  double total = 0.0;
+  for (const auto& [phase, seconds] : timings)
+    total += seconds;
+  os << "seconds " << total << " (";
+  bool first = true;
+  for (const char* phase : {"solve", "reconstruct", "estimate", "mark", "refine", "transfer", "output"}) {
+    const auto it = timings.find(phase);
+    if (it == timings.end())
+      continue;
+    os << (first ? "" : ", ") << phase << " " << it->second;
+    first = false;
+  }
+  os << "), peak memory " << std::setprecision(0) << memory.maxMB << " MB";
+  if (comm_->getSize() > 1)
+    os << " per rank, " << memory.sumMB << " MB on all " << comm_->getSize() << " ranks";
+  progress_.report("cycle summary", os.str());
+}
+
 void Simulation::writeFields(int cycle)
 {
   if (!writer_)
@@ -742,12 +801,18 @@ void Simulation::run()
       writeFields(cycle);
       killIfAsked(cycle);
       recordCycle(cycle);
-      summary_->currentCycle()["timings"] = timers_.cycleTimings();
-      timers_.nextCycle();
+      recordCost();
       summary_->write();
       // The next cycle can start from here (a run that stops now needs no checkpoint).
-      if (stopReason_.empty())
+      if (stopReason_.empty()) {
+        const double start = Teuchos::Time::wallTime();
         writeCheckpoint(cycle);
+        // Its time is known only after the summary record was written (and copied into the
+        // checkpoint): summary.json has it from the next write on (the next cycle's, or the last).
+        double seconds = Teuchos::Time::wallTime() - start, slowest = 0.0;
+        Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(slowest));
+        summary_->currentCycle()["timings"]["checkpoint"] = slowest;
+      }
       if (!stopReason_.empty()) {
         progress_.report("stop", stopReason_);
         break;

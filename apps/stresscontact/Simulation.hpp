@@ -105,6 +105,8 @@ private:
   void mark();
   void writeFields(int cycle);
   void recordCycle(int cycle);
+  /// The cycle's timings and peak memory into summary.json, and its one-line progress summary.
+  void recordCost();
 
   // Checkpoint/restart (SimulationCheckpoint.cpp; issue #12, item 7).
   /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5.
@@ -163,6 +165,9 @@ private:
   // the previous cycle (nested iteration: the next cycle starts from their state).
   std::unique_ptr<contact::ActiveSetSolver> contactSolver_;
   std::vector<contact::ContactPoint> previousPoints_;
+  /// For every face of the current mesh, the boundary face of the previous mesh that contains it
+  /// (-1 off the boundary), from the last refinement step; empty without one (first cycle).
+  std::vector<int> contactFaceParents_;
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<io::XdmfWriter> writer_;

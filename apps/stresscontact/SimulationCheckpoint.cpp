@@ -37,7 +37,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // Bumped when the content changes meaning; a checkpoint of another version is refused.
-constexpr long long kCheckpointVersion = 1;
+constexpr long long kCheckpointVersion = 2;  // 2: contact points with face and index
 
 std::string checkpointPath(const std::string& directory)
 {
@@ -95,10 +95,12 @@ std::vector<T> narrow(const std::vector<long long>& v)
 
 void Simulation::writeCheckpoint(int cycle)
 {
-  // Not timed: it is written after the cycle's timings are recorded (it is small: 0.3 MB at
-  // 54k DOFs in 2D, docs/output.md).
-  // The contact points of this cycle, every rank's in rank order: on restart rank 0 holds them
-  // all, so that ActiveSetSolver::setInitialState gathers the same list whatever the rank count.
+  // Timed by run() as the cycle's "checkpoint" phase, which summary.json shows from its next
+  // write on (the checkpoint copies the cycle's record before its own time is known).
+  // The contact points of this cycle, every rank's in rank order, with their face (in the mesh
+  // of this cycle, which the checkpoint holds) and index in it: on restart rank 0 holds them all,
+  // and ActiveSetSolver::transferState carries them to cycle N+1 through the refinement of the
+  // restored mesh, as in the uninterrupted run, whatever the rank count.
   const int d = problem_.dimension;
   std::vector<double> mine;
   for (const auto& p : previousPoints_) {
@@ -106,6 +108,8 @@ void Simulation::writeCheckpoint(int cycle)
     mine.push_back(static_cast<double>(p.status));
     mine.push_back(p.direction[0]);
     mine.push_back(p.direction[1]);
+    mine.push_back(static_cast<double>(p.face));
+    mine.push_back(static_cast<double>(p.index));
   }
   std::vector<double> points = contact::gatherAllVariable(mine, *comm_);
 
@@ -135,7 +139,7 @@ void Simulation::writeCheckpoint(int cycle)
     cp.setInts("mesh_curved_edge_parts", {s.curvedEdgeParts.begin(), s.curvedEdgeParts.end()});
 
     cp.setInts("marked_elements", {marked_.begin(), marked_.end()});
-    cp.setInts("contact_point_stride", {d + 3});
+    cp.setInts("contact_point_stride", {d + 5});
     cp.setDoubles("contact_points", std::move(points));
 
     cp.setString("summary_cycles", summary_->json()["cycles"].dump());
@@ -217,18 +221,26 @@ int Simulation::readCheckpoint()
 
   const int d = problem_.dimension;
   const auto& points = cp.doubles("contact_points");
-  if (scalar("contact_point_stride") != d + 3 || points.size() % (d + 3) != 0)
+  const int stride = d + 5;
+  if (scalar("contact_point_stride") != stride || points.size() % stride != 0)
     bad("has contact points of another dimension (damaged)");
   previousPoints_.clear();
-  if (comm_->getRank() == 0)
-    for (std::size_t k = 0; k < points.size(); k += d + 3) {
-      contact::ContactPoint p;
-      for (int i = 0; i < d; ++i)
-        p.x[i] = points[k + i];
-      p.status = static_cast<contact::PointStatus>(static_cast<int>(points[k + d]));
-      p.direction = {points[k + d + 1], points[k + d + 2]};
-      previousPoints_.push_back(p);
-    }
+  for (std::size_t k = 0; k < points.size(); k += stride) {
+    // Each point's face must be a boundary face of the restored mesh (the mesh of its cycle).
+    const double face = points[k + d + 3];
+    if (!(face >= 0 && face < mesh_->numFaces()) || !mesh_->isBoundaryFace(static_cast<int>(face)))
+      bad("has a contact point on a face that its mesh does not have on the boundary (damaged)");
+    if (comm_->getRank() != 0)
+      continue;
+    contact::ContactPoint p;
+    for (int i = 0; i < d; ++i)
+      p.x[i] = points[k + i];
+    p.status = static_cast<contact::PointStatus>(static_cast<int>(points[k + d]));
+    p.direction = {points[k + d + 1], points[k + d + 2]};
+    p.face = static_cast<int>(face);
+    p.index = static_cast<int>(points[k + d + 4]);
+    previousPoints_.push_back(p);
+  }
 
   Json cycles, steps;
   try {

@@ -4,7 +4,7 @@
 //   CHECK is one of
 //     near:/json/pointer=VALUE:RELTOL     |x − VALUE| ≤ RELTOL·|VALUE|
 //     eq:/json/pointer=VALUE              x == VALUE (numbers, booleans or strings)
-//     ge:/json/pointer=VALUE  le:/json/pointer=VALUE
+//     ge:/json/pointer=VALUE  le:/json/pointer=VALUE  gt:/json/pointer=VALUE (x > VALUE)
 //     size:/json/pointer=N                array or object has N entries
 //     exists:/json/pointer
 //     rate:FIRST:LAST=MIN:MAX             the convergence rate of η in DOFs over cycles FIRST..LAST
@@ -181,6 +181,9 @@ int main(int argc, char* argv[])
       } else if (kind == "le") {
         ok = x <= v;
         msg << x << " <= " << v;
+      } else if (kind == "gt") {
+        ok = x > v;
+        msg << x << " > " << v;
       } else {
         msg << "unknown check kind";
       }

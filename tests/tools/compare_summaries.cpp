@@ -6,7 +6,8 @@
 // Both must have "converged" equal and the same number of cycles; in every cycle every value
 // (recursively) must agree: the same keys, numbers within |a − b| ≤ R·max(|a|, |b|) (default
 // R = 1e-12; integers exactly), strings, booleans and nulls equal. Skipped: wall times
-// ("timings" and any key containing "seconds") and any object key given with --ignore. Prints every difference (pointer, both values,
+// ("timings" and any key containing "seconds"), the peak memory ("memory") and any object key
+// given with --ignore. Prints every difference (pointer, both values,
 // relative difference) and exits 1 if there is one, 2 on a usage or file error.
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,7 @@ namespace {
 
 struct Comparison {
   double rtol = 1e-12;
-  std::set<std::string> ignored{"timings"};
+  std::set<std::string> ignored{"timings", "memory"};
   bool skipped(const std::string& key) const
   {
     return ignored.count(key) || key.find("seconds") != std::string::npos;

@@ -22,6 +22,7 @@
 #include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
 #include <sc/mesh/Partitioning.hpp>
+#include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/DirectSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
@@ -470,6 +471,140 @@ TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
     worst = std::max(worst, std::abs(a.points[i].sigmaT[0] - b.points[i].sigmaT[0]));
   }
   TEST_COMPARE(worst, <=, 1e-8 * b.summary.maxPressure);
+}
+
+// Nested iteration through the refinement history (issue #9): the contact state of a solved
+// Hertz run with Coulomb friction (free, stick and slip points all occur) is carried to a mesh in
+// which the contact faces on one side of the zone were bisected, by ActiveSetSolver::transferState
+// with the parents of mesh::boundaryFaceParents. Every new point must have the state of the
+// nearest point of its face's parent face (brute force here, over every rank's points): exactly
+// the old point's state on an unrefined face (same position), the parent's nearer point on a
+// refined one. At k = 1 and 2 (several points per face), at 1, 2 and 4 ranks (the partitions of
+// both meshes differ, the states may not). Then the solve on the new mesh needs at most 3 Newton
+// steps; without a history every point starts free.
+TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
+{
+  using sc::contact::ContactPoint;
+  using sc::contact::PointStatus;
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  for (int degree : {1, 2}) {
+    Teuchos::ParameterList meshList;
+    meshList.set("Source", std::string("Half disc"));
+    meshList.set("Initial mesh size", 0.2);
+    auto refiner = sc::mesh::MeshFactory::build(meshList, 2, *comm);
+    Teuchos::ParameterList local;
+    local.set("Levels", 6);
+    local.set("Center", Teuchos::Array<double>(2, 0.0));
+    local.set("Radius", 0.25);
+    local.set("Boundary", std::string());
+    sc::mesh::MeshFactory::refineLocally(*refiner, local);
+    refiner->forgetHistory();
+
+    sc::core::Material material{20600.0, 0.28};
+    sc::core::BoundaryConditions bcs;
+    bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, {0.0, -0.01}, false});
+    bcs.conditions.push_back({"Arc", sc::core::BoundaryType::Contact, {}, false});
+    sc::core::ContactSettings cs;
+    cs.obstaclePoint = {0.0, 0.0};
+    cs.obstacleNormal = {0.0, 1.0};
+    cs.frictionLaw = sc::core::FrictionLaw::Coulomb;
+    cs.frictionCoefficient = 0.4;
+    struct Run {
+      std::vector<ContactPoint> initial, solved;
+      sc::contact::ContactStatistics stats;
+    };
+    // Solve on mesh m (or only transfer), starting from `previous` through `parents` (null: all
+    // free).
+    auto solveOn = [&](Teuchos::RCP<const sc::mesh::SimplexMesh> m, const std::vector<ContactPoint>* previous,
+                       const std::vector<int>* parents, bool solve = true) {
+      auto owner = sc::mesh::partitionElements(*m, *comm);
+      auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
+      sc::assembly::MixedElasticityAssembler assembler(space, comm);
+      assembler.assemble({material, bcs, nullptr});
+      Teuchos::ParameterList newton;
+      sc::contact::ActiveSetSolver contact(*space, cs, material, {"Arc"}, newton, comm);
+      if (previous)
+        contact.transferState(*previous, *parents);
+      Run r;
+      r.initial = contact.points();
+      if (!solve)
+        return r;
+      Teuchos::ParameterList solverList;
+      solverList.set("Type", std::string("MUMPS"));
+      auto solver = sc::solvers::createLinearSolver(solverList);
+      solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+      auto x = assembler.createVector();
+      contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
+      r.solved = contact.points();
+      r.stats = contact.statistics();
+      return r;
+    };
+
+    auto m0 = refiner->mesh();
+    const Run r0 = solveOn(m0, nullptr, nullptr);
+    TEST_ASSERT(r0.stats.converged);
+    // Bisect the elements of the contact faces left of x = 0.02: refined and unrefined faces,
+    // in and out of the zone.
+    const int arc = m0->boundaryId("Arc");
+    std::vector<int> marked;
+    for (int f : m0->boundaryFaces()) {
+      const int* v = m0->faceVertices(f);
+      if (m0->faceBoundaryId(f) == arc && 0.5 * (m0->vertex(v[0])[0] + m0->vertex(v[1])[0]) < 0.02)
+        marked.push_back(m0->faceElements(f)[0]);
+    }
+    const auto& step = refiner->refine(marked);
+    auto m1 = refiner->mesh();
+    const std::vector<int> parents = sc::mesh::boundaryFaceParents(*m0, *m1, step);
+    refiner->forgetHistory();
+    const Run r1 = solveOn(m1, &r0.solved, &parents);
+
+    // Every rank's points of the first mesh: (face, x, y, status, direction).
+    std::vector<double> mine;
+    for (const auto& q : r0.solved)
+      mine.insert(mine.end(), {static_cast<double>(q.face), q.x[0], q.x[1],
+                               static_cast<double>(q.status), q.direction[0]});
+    const auto old = sc::contact::gatherAllVariable(mine, *comm);
+    long long counts[3] = {0, 0, 0}, checked[2] = {0, 0};  // per status; unrefined, refined faces
+    for (const auto& p : r1.initial) {
+      const int parent = parents[p.face];
+      TEST_COMPARE(parent, >=, 0);
+      double best = 1e300;
+      std::size_t bestK = 0;
+      for (std::size_t k = 0; k < old.size(); k += 5)
+        if (static_cast<int>(old[k]) == parent) {
+          const double d2 = std::pow(p.x[0] - old[k + 1], 2) + std::pow(p.x[1] - old[k + 2], 2);
+          if (d2 < best)
+            best = d2, bestK = k;
+        }
+      TEST_COMPARE(best, <, 1e299);
+      TEST_EQUALITY(static_cast<int>(p.status), static_cast<int>(old[bestK + 3]));
+      TEST_EQUALITY(p.direction[0], old[bestK + 4]);
+      const int* fv = m1->faceVertices(p.face);
+      const int* pv = m0->faceVertices(parent);
+      const bool unrefined = std::min(fv[0], fv[1]) == std::min(pv[0], pv[1]) &&
+                             std::max(fv[0], fv[1]) == std::max(pv[0], pv[1]);
+      if (unrefined)
+        TEST_COMPARE(best, <, 1e-24);  // the same point
+      ++checked[unrefined ? 0 : 1];
+      ++counts[static_cast<int>(p.status)];
+    }
+    long long global[5] = {0, 0, 0, 0, 0}, local5[5] = {counts[0], counts[1], counts[2], checked[0], checked[1]};
+    Teuchos::reduceAll<int, long long>(*comm, Teuchos::REDUCE_SUM, 5, local5, global);
+    out << "k = " << degree << ": transferred " << global[0] << " free, " << global[1] << " stick, "
+        << global[2] << " slip points (" << global[3] << " on unrefined, " << global[4]
+        << " on refined faces); Newton steps " << r0.stats.newtonIterations << " on the first mesh, "
+        << r1.stats.newtonIterations << " on the refined one\n";
+    for (long long g : global)
+      TEST_COMPARE(g, >, 0);
+    TEST_ASSERT(r1.stats.converged);
+    TEST_COMPARE(r1.stats.newtonIterations, <=, 3);
+
+    // No history (first cycle): every point starts free.
+    const std::vector<int> none;
+    const Run fresh = solveOn(m1, &r0.solved, &none, false);
+    for (const auto& p : fresh.initial)
+      TEST_EQUALITY(static_cast<int>(p.status), static_cast<int>(PointStatus::Free));
+  }
 }
 
 // Contact degrees (issue #11, defect 1): the face DOF points' weights ∫_F L_p are positive for

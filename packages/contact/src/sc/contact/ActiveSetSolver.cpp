@@ -347,93 +347,87 @@ long long ActiveSetSolver::globalNumPoints() const
   return global;
 }
 
-void ActiveSetSolver::setInitialState(const std::vector<ContactPoint>& previous)
+void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
+                                    const std::vector<int>& parentFace)
 {
-  // The previous cycle's points of every rank (the partition changes between cycles): each new
-  // point takes the state of the nearest previous point, found through a uniform bucket grid, so
-  // that the start (and the Newton count) does not depend on the rank count.
+  // Every rank's previous points, as (parent face, index in its face, x, status, direction):
+  // the partition changes between cycles, so a new face's parent may have lived on any rank.
+  // The list is O(contact points), like the replicated mesh.
   const int d = space_.dim();
+  const int stride = d + 5;
   std::vector<double> mine;
+  mine.reserve(previous.size() * stride);
   for (const auto& q : previous) {
-    for (int i = 0; i < d; ++i)
-      mine.push_back(q.x[i]);
+    mine.push_back(static_cast<double>(q.face));
+    mine.push_back(static_cast<double>(q.index));
+    mine.insert(mine.end(), q.x.begin(), q.x.begin() + d);
     mine.push_back(static_cast<double>(q.status));
     mine.push_back(q.direction[0]);
     mine.push_back(q.direction[1]);
   }
   const auto all = gatherAllVariable(mine, *comm_);
-  const int stride = d + 3;
   const std::size_t n = all.size() / stride;
-  if (n == 0)
-    return;
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  if (n == 0 || parentFace.empty())
+    return;  // no history (first cycle): every point starts free
+  // The previous points grouped by face: (face, position in `all`), sorted.
+  std::vector<std::pair<int, std::size_t>> byFace(n);
   for (std::size_t k = 0; k < n; ++k)
-    for (int i = 0; i < d; ++i) {
-      lo[i] = std::min(lo[i], all[k * stride + i]);
-      hi[i] = std::max(hi[i], all[k * stride + i]);
-    }
-  // About one previous point per cell.
-  const int cellsPerAxis = std::max(1, static_cast<int>(std::pow(static_cast<double>(n), 1.0 / d)));
-  double size[3] = {1, 1, 1};
-  for (int i = 0; i < d; ++i)
-    size[i] = std::max((hi[i] - lo[i]) / cellsPerAxis, 1e-300);
-  auto cellOf = [&](const double* x, int i) {
-    return std::min(cellsPerAxis - 1, std::max(0, static_cast<int>((x[i] - lo[i]) / size[i])));
+    byFace[k] = {static_cast<int>(all[k * stride]), k};
+  std::sort(byFace.begin(), byFace.end());
+  const auto& m = space_.mesh();
+  SC_THROW_IF(parentFace.size() != static_cast<std::size_t>(m.numFaces()), core::InternalError,
+              "ActiveSetSolver::transferState: " << parentFace.size() << " parent faces for a mesh of "
+                                                 << m.numFaces() << " faces");
+  // Preference among previous points at the same distance (a new vertex halfway between two
+  // control points, 3D): a contact state over free, stick over slip, then the lower index
+  // within the parent face (fixed by the mesh, so the start does not depend on the rank count).
+  // (Measured on the run_hertz3d_adaptive run, 2026-12-01: 21 Newton steps over cycles 0-6; with
+  // free winning instead, 22.)
+  auto preference = [](int status) {
+    return status == static_cast<int>(PointStatus::Stick) ? 2
+           : status == static_cast<int>(PointStatus::Slip) ? 1
+                                                           : 0;
   };
-  std::vector<std::vector<std::size_t>> cells(static_cast<std::size_t>(std::pow(cellsPerAxis, d)));
-  auto index = [&](const int* c) {
-    std::size_t id = 0;
-    for (int i = d - 1; i >= 0; --i)
-      id = id * cellsPerAxis + c[i];
-    return id;
-  };
-  for (std::size_t k = 0; k < n; ++k) {
-    int c[3] = {0, 0, 0};
-    for (int i = 0; i < d; ++i)
-      c[i] = cellOf(&all[k * stride], i);
-    cells[index(c)].push_back(k);
-  }
   for (auto& p : points_) {
-    int c[3] = {0, 0, 0};
-    for (int i = 0; i < d; ++i)
-      c[i] = cellOf(p.x.data(), i);
-    double best = 1e300;
-    std::size_t bestK = 0;
-    // Rings of cells around p's cell until a point is found and the ring is farther than it.
-    for (int ring = 0; ring <= cellsPerAxis; ++ring) {
-      double ringDist = 1e300;  // lower bound of the distance to cells in this ring
+    const int parent = parentFace[p.face];
+    if (parent < 0)
+      continue;
+    const auto range = std::equal_range(byFace.begin(), byFace.end(), std::make_pair(parent, std::size_t{0}),
+                                        [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (range.first == range.second)
+      continue;  // the parent face had no points (it was not a contact face): start free
+    // Distances to the parent face's points; "equal" within 1e-8 of the largest (the face's
+    // size squared), so that rounding in projected midpoints does not decide.
+    double far = 0.0;
+    std::vector<std::pair<double, std::size_t>> dist;
+    for (auto it = range.first; it != range.second; ++it) {
+      const double* x = &all[it->second * stride + 2];
+      double d2 = 0.0;
       for (int i = 0; i < d; ++i)
-        ringDist = std::min(ringDist, (ring - 1) * size[i]);
-      if (best < 1e299 && ring > 0 && std::max(0.0, ringDist) * std::max(0.0, ringDist) > best)
-        break;
-      int o[3] = {0, 0, 0};
-      const int span = 2 * ring + 1;
-      const int count = d == 2 ? span * span : span * span * span;
-      for (int t = 0; t < count; ++t) {
-        int rem = t, cc[3] = {0, 0, 0};
-        bool onRing = false, inside = true;
-        for (int i = 0; i < d; ++i) {
-          o[i] = rem % span - ring;
-          rem /= span;
-          onRing = onRing || std::abs(o[i]) == ring;
-          cc[i] = c[i] + o[i];
-          inside = inside && cc[i] >= 0 && cc[i] < cellsPerAxis;
-        }
-        if (!onRing || !inside)
-          continue;
-        for (std::size_t k : cells[index(cc)]) {
-          double dist = 0.0;
-          for (int i = 0; i < d; ++i)
-            dist += (p.x[i] - all[k * stride + i]) * (p.x[i] - all[k * stride + i]);
-          if (dist < best || (dist == best && k < bestK)) {
-            best = dist;
-            bestK = k;
-          }
-        }
-      }
+        d2 += (p.x[i] - x[i]) * (p.x[i] - x[i]);
+      dist.emplace_back(d2, it->second);
+      far = std::max(far, d2);
     }
-    p.status = static_cast<PointStatus>(static_cast<int>(all[bestK * stride + d]));
-    p.direction = {all[bestK * stride + d + 1], all[bestK * stride + d + 2]};
+    double best = 1e300;
+    for (const auto& dk : dist)
+      best = std::min(best, dk.first);
+    std::size_t chosen = dist.front().second;
+    bool found = false;
+    for (const auto& [d2, k] : dist) {
+      if (d2 > best + 1e-8 * far)
+        continue;
+      if (!found) {
+        chosen = k, found = true;
+        continue;
+      }
+      const int s = static_cast<int>(all[k * stride + 2 + d]);
+      const int sc = static_cast<int>(all[chosen * stride + 2 + d]);
+      if (preference(s) > preference(sc) ||
+          (preference(s) == preference(sc) && all[k * stride + 1] < all[chosen * stride + 1]))
+        chosen = k;
+    }
+    p.status = static_cast<PointStatus>(static_cast<int>(all[chosen * stride + 2 + d]));
+    p.direction = {all[chosen * stride + 3 + d], all[chosen * stride + 4 + d]};
   }
 }
 

@@ -108,10 +108,19 @@ public:
                   const Teuchos::ParameterList& newtonList, Teuchos::RCP<const Teuchos::Comm<int>> comm);
   ~ActiveSetSolver();
 
-  /// Start from the states of the points of a previous cycle (`previous`: this rank's; the
-  /// nearest previous point of any rank gives each new point its state), else all free.
-  /// Collective.
-  void setInitialState(const std::vector<ContactPoint>& previous);
+  /// Start from the states of the previous cycle's points through the refinement history
+  /// (nested iteration). `parentFace[f]`: the face of the previous mesh that contains face f of
+  /// this mesh, -1 off the boundary (mesh::boundaryFaceParents of the refinement step; empty: no
+  /// history, all points start free). `previous`: this rank's points of the previous cycle (their
+  /// `face`, `index` and `x` in the previous mesh). Each point takes the state (status, slip
+  /// direction) of the nearest point of its face's parent face: an unrefined face keeps its
+  /// points' states, each half (2D) or quarter (3D) of a refined face those of the parent's
+  /// points on its side. At degree k ≥ 2 a face has several points and a child face takes, point
+  /// by point, the nearest of the parent's; where two are equally near (a new vertex halfway
+  /// between two Bernstein control points, 3D), a contact state wins over free and stick over
+  /// slip, then the lower index in the parent face. Depends on the mesh only, not on the rank
+  /// count. Collective.
+  void transferState(const std::vector<ContactPoint>& previous, const std::vector<int>& parentFace);
 
   /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact
   /// terms; x: initial guess in, solution out (each Newton step starts the linear solver from the

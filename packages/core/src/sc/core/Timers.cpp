@@ -1,5 +1,7 @@
 #include "sc/core/Timers.hpp"
 
+#include <sys/resource.h>
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
@@ -47,5 +49,16 @@ std::map<std::string, double> PhaseTimers::cycleTimings() const
 }
 
 double PhaseTimers::elapsed() const { return Teuchos::Time::wallTime() - start_; }
+
+PhaseTimers::PeakMemory PhaseTimers::peakMemory() const
+{
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  const double local = static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kB
+  PeakMemory result;
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, local, Teuchos::outArg(result.maxMB));
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, local, Teuchos::outArg(result.sumMB));
+  return result;
+}
 
 }  // namespace sc::core

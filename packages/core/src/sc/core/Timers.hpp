@@ -1,5 +1,6 @@
 #pragma once
-// Wall-clock time per phase (mesh, assemble, solve, estimate, refine, output, ...), per cycle.
+// Wall-clock time per phase (mesh, assemble, solve, reconstruct, estimate, mark, refine, transfer,
+// output, ...), per cycle, and the peak resident memory.
 // Each phase is also a Teuchos::TimeMonitor timer ("StressContact: <phase>") so that Trilinos'
 // own summary tables include it. Reported times are the maximum over ranks (the slowest rank
 // is what a user waits for).
@@ -43,6 +44,15 @@ public:
 
   /// Seconds since construction on this rank.
   double elapsed() const;
+
+  /// Peak resident memory of the process since it started (getrusage ru_maxrss), in MB
+  /// (2^20 bytes): the maximum over ranks and the sum over ranks (collective call). ru_maxrss is
+  /// a high-water mark: per cycle it is the peak of all cycles so far, not of that cycle alone.
+  struct PeakMemory {
+    double maxMB = 0.0;
+    double sumMB = 0.0;
+  };
+  PeakMemory peakMemory() const;
 
 private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

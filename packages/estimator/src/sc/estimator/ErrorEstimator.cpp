@@ -49,9 +49,26 @@ void ErrorEstimator::addContribution(std::shared_ptr<const EstimatorContribution
 ErrorEstimate ErrorEstimator::estimate(const assembly::MultiVector& solution,
                                        const assembly::ElasticityData& data)
 {
+  reconstruct(solution, data);
+  return estimateReconstructed(solution, data);
+}
+
+void ErrorEstimator::reconstruct(const assembly::MultiVector& solution,
+                                 const assembly::ElasticityData& data)
+{
   SC_THROW_IF(data.boundaryConditions.hasContact() && contributions_.empty(), core::InputError,
               "a scene with a boundary of Type Contact needs the contact terms of η_CF: add an "
               "estimator::ContactContribution before estimate().");
+  assembly::ElementSolution sol(assembler_, solution);
+  reconstruction_->reconstruct(sol, data);
+  reconstructed_ = true;
+}
+
+ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector& solution,
+                                                    const assembly::ElasticityData& data)
+{
+  SC_THROW_IF(!reconstructed_, core::InternalError,
+              "ErrorEstimator::estimateReconstructed before reconstruct()");
   const auto& S = assembler_.space();
   const auto& m = S.mesh();
   const int d = S.dim();
@@ -59,7 +76,6 @@ ErrorEstimate ErrorEstimator::estimate(const assembly::MultiVector& solution,
   const core::ExactSolution* exact = data.exactSolution;
 
   assembly::ElementSolution sol(assembler_, solution);
-  reconstruction_->reconstruct(sol, data);
   const auto& rec = *reconstruction_;
 
   disc::ElementValues ev(S, rec.cubatureDegree());

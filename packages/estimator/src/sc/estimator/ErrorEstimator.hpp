@@ -48,8 +48,16 @@ public:
   void addContribution(std::shared_ptr<const EstimatorContribution> contribution);
 
   /// Reconstruct u^R from `solution` (owned map of the assembler) and estimate. `data` must be
-  /// the data the system was assembled with.
+  /// the data the system was assembled with. The same as reconstruct() then
+  /// estimateReconstructed(), the two steps the application times separately.
   ErrorEstimate estimate(const assembly::MultiVector& solution, const assembly::ElasticityData& data);
+
+  /// Step 1: u^R from `solution` (local Neumann problems, averaging at shared nodes; collective).
+  void reconstruct(const assembly::MultiVector& solution, const assembly::ElasticityData& data);
+  /// Step 2: η and its parts from `solution` and the u^R of the last reconstruct() (same
+  /// solution and data).
+  ErrorEstimate estimateReconstructed(const assembly::MultiVector& solution,
+                                      const assembly::ElasticityData& data);
 
   /// The reconstruction of the last estimate().
   const DisplacementReconstruction& reconstruction() const { return *reconstruction_; }
@@ -58,6 +66,7 @@ private:
   const assembly::MixedElasticityAssembler& assembler_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::unique_ptr<DisplacementReconstruction> reconstruction_;
+  bool reconstructed_ = false;
   std::vector<std::shared_ptr<const EstimatorContribution>> contributions_;
 };
 

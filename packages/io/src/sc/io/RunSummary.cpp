@@ -43,6 +43,7 @@ Json RunSummary::makeCycleEntry(int cycle)
   c["linear_solves"] = nullptr;
   c["linear_iterations"] = nullptr;
   c["timings"] = Json::object();
+  c["memory"] = Json::object();
   return c;
 }
 
