@@ -1,5 +1,5 @@
 # cmake -DAPP=stresscontact -DCOMPARE=compare_summaries -DMPIEXEC=mpiexec -DMPIFLAGS="a|b" -DNP=2
-#       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 [-DRTOL=1e-12]
+#       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 [-DRTOL=1e-12] [-DATOL=0]
 #       [-DIGNORE="key|..."] [-DSAME_FILES=ON] [-DRESTART_NP=1] -P Restart.cmake
 # Checkpoint/restart of an adaptive run (issue #12, item 7; docs/adaptivity.md):
 #   1. the deck uninterrupted into OUT/full;
@@ -16,6 +16,9 @@
 foreach(v SETS MPIFLAGS IGNORE)
   string(REPLACE "|" ";" ${v} "${${v}}")
 endforeach()
+if(NOT ATOL)
+  set(ATOL 0)
+endif()
 if(NOT RTOL)
   set(RTOL 1e-12)
 endif()
@@ -109,7 +112,7 @@ foreach(k IN LISTS IGNORE)
   list(APPEND ignores --ignore ${k})
 endforeach()
 execute_process(COMMAND ${COMPARE} ${OUT}/full/summary.json ${OUT}/killed/summary.json
-                        --rtol ${RTOL} ${ignores} RESULT_VARIABLE rc)
+                        --rtol ${RTOL} --atol ${ATOL} ${ignores} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the restarted run's summary differs from the uninterrupted run's")
 endif()
@@ -164,7 +167,7 @@ foreach(change "eta;total;${perturbed}" "dofs;total;${dofs}")
   string(JSON broken SET "${restarted}" cycles ${KILL_CYCLE} ${group} ${key} "${value}")
   file(WRITE "${OUT}/perturbed_summary.json" "${broken}")
   execute_process(COMMAND ${COMPARE} ${OUT}/full/summary.json ${OUT}/perturbed_summary.json
-                          --rtol ${RTOL} ${ignores} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+                          --rtol ${RTOL} --atol ${ATOL} ${ignores} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
   message("with ${group}/${key} = ${value} in cycle ${KILL_CYCLE}:\n${out}")
   if(NOT rc EQUAL 1)
     message(FATAL_ERROR "compare_summaries did not report the changed ${group}/${key} (status ${rc})")

@@ -1,11 +1,12 @@
 // compare_summaries: do two runs' summary.json agree cycle by cycle? (checkpoint/restart tests,
 // issue #12, item 7)
 //
-//   compare_summaries EXPECTED ACTUAL [--rtol R] [--ignore KEY]...
+//   compare_summaries EXPECTED ACTUAL [--rtol R] [--atol A] [--ignore KEY]...
 //
 // Both must have "converged" equal and the same number of cycles; in every cycle every value
 // (recursively) must agree: the same keys, numbers within |a − b| ≤ R·max(|a|, |b|) (default
-// R = 1e-12; integers exactly), strings, booleans and nulls equal. Skipped: wall times
+// R = 1e-12) or |a − b| ≤ A (default 0: for quantities at rounding level, such as an estimator
+// part that is zero up to rounding; integers exactly), strings, booleans and nulls equal. Skipped: wall times
 // ("timings" and any key containing "seconds"), the peak memory ("memory") and any object key
 // given with --ignore. Prints every difference (pointer, both values,
 // relative difference) and exits 1 if there is one, 2 on a usage or file error.
@@ -25,6 +26,7 @@ namespace {
 
 struct Comparison {
   double rtol = 1e-12;
+  double atol = 0.0;
   std::set<std::string> ignored{"timings", "memory"};
   bool skipped(const std::string& key) const
   {
@@ -53,6 +55,8 @@ struct Comparison {
       const double x = a.get<double>(), y = b.get<double>();
       const double scale = std::max(std::abs(x), std::abs(y));
       const double rel = scale > 0.0 ? std::abs(x - y) / scale : 0.0;
+      if (std::abs(x - y) <= atol)
+        return;
       worst = std::max(worst, rel);
       if (!(rel <= rtol)) {
         std::ostringstream os;
@@ -110,6 +114,8 @@ int main(int argc, char* argv[])
       const std::string a = argv[i];
       if (a == "--rtol" && i + 1 < argc)
         c.rtol = std::stod(argv[++i]);
+      else if (a == "--atol" && i + 1 < argc)
+        c.atol = std::stod(argv[++i]);
       else if (a == "--ignore" && i + 1 < argc)
         c.ignored.insert(argv[++i]);
       else if (nfiles < 2 && a.rfind("--", 0) != 0)
@@ -118,7 +124,7 @@ int main(int argc, char* argv[])
         throw std::runtime_error("unexpected argument '" + a + "'");
     }
     if (nfiles != 2)
-      throw std::runtime_error("usage: compare_summaries EXPECTED ACTUAL [--rtol R] [--ignore KEY]...");
+      throw std::runtime_error("usage: compare_summaries EXPECTED ACTUAL [--rtol R] [--atol A] [--ignore KEY]...");
     const json a = load(files[0]), b = load(files[1]);
     if (!a.contains("cycles") || !b.contains("cycles") || !a["cycles"].is_array() || !b["cycles"].is_array())
       throw std::runtime_error("both files need a 'cycles' array");
