@@ -57,7 +57,8 @@ def main():
         sys.exit("build the application first (scripts/build-and-test.sh): " + APP)
     cases = []
     for geometry in (1, 2):
-        for frame in ("Obstacle normal", "Body normal"):
+        # The body frame is not offered on curved faces (docs/contact.md "Curved contact faces").
+        for frame in ("Obstacle normal", "Body normal") if geometry == 1 else ("Obstacle normal",):
             for k, sweeps in ((1, 6), (1, 8), (1, 10), (2, 6), (2, 8)):
                 cases.append((geometry, frame, k, sweeps, 0.28, "None"))
             for nu in (0.28, 0.4999):
