@@ -68,13 +68,9 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
     const auto geometry = mesh::MeshFactory::buildGeometry(meshList, dim);
     const bool curved = meshList.get<int>("Geometry order") == 2 && meshList.get<bool>("Project boundary") &&
                         !geometry.is_null() && !geometry->curvedBoundaryNames().empty();
-    contact::checkContactDegree(dim, discretization_.degree, curved);
-    SC_THROW_IF(curved && contact_.frame == core::ContactFrame::BodyNormal, core::InputError,
-                "'Contact/Frame' = 'Body normal' is not available on curved contact faces "
-                "('Mesh/Geometry order' = 2): the body normal varies along a curved face, and "
-                "the constraints need one frame per face. Use 'Contact/Frame' = 'Obstacle "
-                "normal', or 'Mesh/Geometry order' = 1 for the talk's body-normal model on "
-                "straight faces (docs/contact.md).");
+    contact::checkContactDegree(dim, discretization_.degree);
+    if (curved)
+      contact::checkCurvedContact(dim, discretization_.degree, contact_.frame);
   }
   {
     // The stress-block multigrid needs the nested mesh hierarchy, which the application does not

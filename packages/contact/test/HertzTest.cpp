@@ -627,10 +627,12 @@ TEUCHOS_UNIT_TEST(Contact, SupportedDegrees)
   // the reason for the Gauss-Lobatto points. k = 1 keeps 1/3, 2/3 with weights 1/2, 1/2.
   TEST_FLOATING_EQUALITY(sc::disc::minRelativeFaceDofWeight(2, 1), 0.5, 1e-10);
   // Curved contact faces: verified at k = 1, 2 (2D) and k = 1 (3D), rejected above.
-  TEST_NOTHROW(sc::contact::checkContactDegree(2, 2, true));
-  TEST_NOTHROW(sc::contact::checkContactDegree(3, 1, true));
-  TEST_THROW(sc::contact::checkContactDegree(2, 3, true), sc::core::InputError);
-  TEST_THROW(sc::contact::checkContactDegree(3, 2, true), sc::core::InputError);
+  const auto obstacle = sc::core::ContactFrame::ObstacleNormal;
+  TEST_NOTHROW(sc::contact::checkCurvedContact(2, 2, obstacle));
+  TEST_NOTHROW(sc::contact::checkCurvedContact(3, 1, obstacle));
+  TEST_THROW(sc::contact::checkCurvedContact(2, 3, obstacle), sc::core::InputError);
+  TEST_THROW(sc::contact::checkCurvedContact(3, 2, obstacle), sc::core::InputError);
+  TEST_THROW(sc::contact::checkCurvedContact(2, 1, sc::core::ContactFrame::BodyNormal), sc::core::InputError);
   TEST_COMPARE(sc::disc::minRelativeFaceDofWeight(3, 3), <, 0.0);
 }
 

@@ -151,7 +151,7 @@ bool useBernsteinConstraints(int dim, int /*degree*/, bool curvedFaces)
   return dim == 3;
 }
 
-void checkContactDegree(int dim, int degree, bool curvedFaces)
+void checkContactDegree(int dim, int degree)
 {
   const double w = disc::minRelativeFaceDofWeight(dim, degree);
   SC_THROW_IF(w <= 1e-10, core::InputError,
@@ -167,13 +167,23 @@ void checkContactDegree(int dim, int degree, bool curvedFaces)
               "'Discretization/Degree' = " << degree << " with contact in 3D is not verified "
                   "(the Hertz 3D tests cover k = 1, 2). Valid with contact: 1, 2 "
                   "(docs/contact.md, 'Degree').");
+}
+
+void checkCurvedContact(int dim, int degree, core::ContactFrame frame)
+{
   // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
-  SC_THROW_IF(curvedFaces && ((dim == 2 && degree > 2) || (dim == 3 && degree > 1)), core::InputError,
+  SC_THROW_IF((dim == 2 && degree > 2) || (dim == 3 && degree > 1), core::InputError,
               "'Discretization/Degree' = " << degree << " with contact on curved faces "
                   "('Mesh/Geometry order' = 2) in " << dim << "D is not verified (the Hertz tests "
                   "cover k = " << (dim == 2 ? "1, 2" : "1") << " there). Set 'Mesh/Geometry "
                   "order' = 1 (straight faces, verified for this degree) or a degree of "
                   << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
+  SC_THROW_IF(frame == core::ContactFrame::BodyNormal, core::InputError,
+              "'Contact/Frame' = 'Body normal' is not available on curved contact faces "
+              "('Mesh/Geometry order' = 2): the body normal varies along a curved face, and the "
+              "constraints (Bernstein coefficients of the face's traction) need one frame per "
+              "face. Use 'Contact/Frame' = 'Obstacle normal', or 'Mesh/Geometry order' = 1 for "
+              "the talk's body-normal model on straight faces (docs/contact.md).");
 }
 
 ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
@@ -205,19 +215,18 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
     contactIds.push_back(m.boundaryId(name));
   const bool obstacleFrame = settings.frame == core::ContactFrame::ObstacleNormal;
   bernstein_ = useBernsteinConstraints(d, space.degree(), space.geometryOrder() == 2);
-  // The body frame on curved contact faces: rejected on every rank alike (the mesh is
-  // replicated, so each rank sees all contact faces; a rank-local check would leave the other
+  // Curved contact faces: the degrees and the frame verified there (the mesh is replicated, so
+  // every rank sees all contact faces and decides alike; a rank-local throw would leave the other
   // ranks waiting in the collectives below).
-  if (!obstacleFrame && space.curvedElements())
+  if (space.curvedElements()) {
+    bool curvedContact = false;
     for (int f : m.boundaryFaces())
-      SC_THROW_IF(std::find(contactIds.begin(), contactIds.end(), m.faceBoundaryId(f)) != contactIds.end() &&
-                      space.isCurved(m.faceElements(f)[0]),
-                  core::InputError,
-                  "'Contact/Frame' = 'Body normal' on curved contact faces ('Mesh/Geometry order' "
-                  "= 2) is not available: the body normal varies along a curved face, and the "
-                  "constraints (Bernstein coefficients of the face's traction) need one frame per "
-                  "face. Use 'Contact/Frame' = 'Obstacle normal', or 'Mesh/Geometry order' = 1 "
-                  "for the talk's body-normal model on straight faces.");
+      curvedContact = curvedContact ||
+                      (std::find(contactIds.begin(), contactIds.end(), m.faceBoundaryId(f)) != contactIds.end() &&
+                       space.isCurved(m.faceElements(f)[0]));
+    if (curvedContact)
+      checkCurvedContact(d, space.degree(), settings.frame);
+  }
   double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
   disc::FaceValues fv(space, 2 * space.degree() + 2);
   for (int e : space.ownedElements()) {
@@ -310,10 +319,9 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
           double w = 0.0;
           for (int j = 0; j < nq; ++j)
             w += cf.V[j * nq + pp] * fv.stressNormal(dofPoints[j].localDof, q) / dofPoints[j].scale;
-          // The gap along the point's constraint direction: ν (obstacle frame), or the body's
-          // outward normal at q (body frame; constant on a straight face).
-          const double* dir = obstacleFrame || bernstein_ ? p.n.data() : fv.normal(q).data();
-          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), dir, cap) * w;
+          // The gap along the point's constraint direction: ν (obstacle frame), or the face's
+          // outward normal (body frame, straight faces only).
+          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), p.n.data(), cap) * w;
           p.weight += fv.weight(q) * w;
         }
         minRelativeWeight = std::min(minRelativeWeight, p.weight / area);

@@ -83,9 +83,12 @@ struct ContactStatistics {
 /// Throws InputError naming 'Discretization/Degree' if contact at this degree and dimension is
 /// not supported: the RT_k face DOF points must have positive weights ∫_F L_p (docs/contact.md,
 /// "Degree"). Supported: k = 1..4 in 2D, k = 1, 2 in 3D. Call it before any work (--check too).
-/// `curvedFaces`: the contact faces are curved (Mesh/Geometry order = 2), verified at k = 1, 2
-/// in 2D and k = 1 in 3D.
-void checkContactDegree(int dim, int degree, bool curvedFaces = false);
+void checkContactDegree(int dim, int degree);
+
+/// Contact on curved faces (Mesh/Geometry order = 2) is verified at k = 1, 2 in 2D and k = 1 in
+/// 3D, in the obstacle frame; anything else is an InputError naming the keys. Called by the
+/// ActiveSetSolver when its contact faces are curved, and up front by the application.
+void checkCurvedContact(int dim, int degree, core::ContactFrame frame);
 
 /// Whether the contact constraints of this dimension and degree act on the Bernstein
 /// coefficients of each face's traction (non-negative dual weights) instead of the DOF points:

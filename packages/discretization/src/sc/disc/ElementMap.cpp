@@ -121,25 +121,14 @@ void ElementMap::reinit(int e)
 
 void ElementMap::inverseTranspose(int q, double G[3][3]) const
 {
-  const double* J = jacobian(q);
-  const double det = det_[q];
+  double J[3][3], inv[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      G[i][j] = 0.0;
-  if (d_ == 2) {
-    // (J⁻¹)ᵀ
-    G[0][0] = J[4] / det;
-    G[0][1] = -J[3] / det;
-    G[1][0] = -J[1] / det;
-    G[1][1] = J[0] / det;
-    return;
-  }
-  // J^{-T} = cof(J) / det J.
+      J[i][j] = jacobian(q)[3 * i + j];
+  invertJacobian(d_, J, det_[q], inv);
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      G[i][j] = (J[3 * i1 + j1] * J[3 * i2 + j2] - J[3 * i1 + j2] * J[3 * i2 + j1]) / det;
-    }
+    for (int j = 0; j < 3; ++j)
+      G[i][j] = inv[j][i];
 }
 
 void ElementMap::sideFrame(int q, int side, std::array<double, 3>& n, double& stretch) const

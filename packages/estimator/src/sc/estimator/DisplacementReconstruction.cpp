@@ -347,12 +347,20 @@ void DisplacementReconstruction::valuesAt(int e, const disc::ElementValues& ev, 
   }
   u.assign(static_cast<std::size_t>(nq) * d, 0.0);
   grad.assign(static_cast<std::size_t>(nq) * d * d, 0.0);
+  // J^{-T} once per point (constant on affine elements, varying on curved ones).
+  std::vector<std::array<std::array<double, 3>, 3>> Gq(nq);
+  for (int q = 0; q < nq; ++q) {
+    double G[3][3];
+    F.inverseTranspose(q, G);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        Gq[q][i][j] = G[i][j];
+  }
   for (int a = 0; a < n; ++a) {
     const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * n + a]];
     const double* c = &I.values_[static_cast<std::size_t>(l) * d];
     for (int q = 0; q < nq; ++q) {
-      double G[3][3];
-      F.inverseTranspose(q, G);
+      const auto& G = Gq[q];
       double g[3] = {0, 0, 0};
       for (int i = 0; i < d; ++i)
         for (int j = 0; j < d; ++j)
