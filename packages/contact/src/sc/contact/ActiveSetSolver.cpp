@@ -530,13 +530,20 @@ int ActiveSetSolver::updateState(bool flipToStick)
 }
 
 Teuchos::RCP<ActiveSetSolver::CrsMatrix>
-ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b) const
+ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b,
+                                const Teuchos::RCP<CrsMatrix>& reuse) const
 {
   const int d = space_.dim();
   const bool friction = settings_.needsFriction();
   const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
-  auto A = Teuchos::rcp(new CrsMatrix(K, Teuchos::Copy));
+  Teuchos::RCP<CrsMatrix> A;
+  if (!reuse.is_null() && reuse->getCrsGraph().get() == K.getCrsGraph().get()) {
+    A = reuse;  // the same graph: overwrite the values, no allocation
+    Kokkos::deep_copy(A->getLocalMatrixHost().values, K.getLocalMatrixHost().values);
+  } else {
+    A = Teuchos::rcp(new CrsMatrix(K, Teuchos::Copy));
+  }
   A->resumeFill();
   rhs.assign(b);
   auto rhsData = rhs.getDataNonConst(0);
@@ -761,9 +768,12 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     return s;
   };
   history.push_back(signature());
+  // A direct solver is done with the previous step's matrix once it has factorised it: its
+  // values are overwritten in the next step. A Krylov solver's preconditioner may keep it.
+  Teuchos::RCP<CrsMatrix> A;
   for (int it = 1; it <= maxIterations_; ++it) {
     const auto stepStart = std::chrono::steady_clock::now();
-    auto A = modifiedMatrix(K, rhs, b);
+    A = modifiedMatrix(K, rhs, b, solver.isIterative() ? Teuchos::null : A);
     // Contact rows make the system non-symmetric. Same graph every step: a direct solver keeps
     // its symbolic analysis and refactorises; x (the previous iterate) is a Krylov solver's
     // initial guess.

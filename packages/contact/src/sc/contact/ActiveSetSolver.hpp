@@ -150,8 +150,11 @@ private:
   void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
                       MultiVector& x);
   double trescaBound(const ContactPoint& p) const;
-  Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs,
-                                         const MultiVector& b) const;
+  /// K with the contact rows of the current state, and its right-hand side. `reuse`: the
+  /// matrix of the previous Newton step on K's graph, whose values are overwritten (null: a new
+  /// copy of K).
+  Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b,
+                                         const Teuchos::RCP<CrsMatrix>& reuse) const;
 
   /// The RT face DOFs of one contact face and the map between their point values and the
   /// face's constraint coefficients: traction t(x_q) = Σ_p V(q,p) τ_p, dual ρ_p = Σ_q V(q,p) r_q.

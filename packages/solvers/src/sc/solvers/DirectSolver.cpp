@@ -102,7 +102,11 @@ Teuchos::RCP<const CrsMatrix> DirectSolver::operatorToFactor()
       equilibration_ = std::make_unique<RuizEquilibration>(factorizedSymmetric_, equilibrationIterations_,
                                                            0.1);
     equilibration_->compute(*A_);
-    scaledA_ = equilibration_->scaledCopy(*A_);
+    if (!scaledA_.is_null() && scaledA_.get() != A_.get() &&
+        scaledA_->getCrsGraph().get() == A_->getCrsGraph().get())
+      equilibration_->scaleInto(*A_, *scaledA_);
+    else
+      scaledA_ = equilibration_->scaledCopy(*A_);
     stats_.equilibrationSeconds = timer.stop();
     stats_.equilibrationIterations = equilibration_->iterations();
     scaledValid_ = true;

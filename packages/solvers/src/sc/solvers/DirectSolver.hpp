@@ -66,7 +66,9 @@ private:
   Teuchos::RCP<const CrsMatrix> operatorToFactor();
 
   Teuchos::RCP<const CrsMatrix> A_;        // the operator to factorise (after physical scaling)
-  Teuchos::RCP<const CrsMatrix> scaledA_;  // D_r A D_c when equilibrating
+  // D_r A D_c when equilibrating; its values are rewritten in place while the graph stays (a
+  // contact Newton loop refactorises on one graph: no new matrix per step).
+  Teuchos::RCP<CrsMatrix> scaledA_;
   std::unique_ptr<RuizEquilibration> equilibration_;
   unsigned long long graphHash_ = 0;
   bool factorizedSymmetric_ = false;  // the symmetry of the current analysis

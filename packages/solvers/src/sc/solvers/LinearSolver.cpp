@@ -37,7 +37,15 @@ void LinearSolver::setOperator(const Teuchos::RCP<const CrsMatrix>& A, bool symm
   } else {
     SC_THROW_IF(!D_->getMap()->isSameAs(*A->getRowMap()), sc::core::InternalError,
                 name() << " solver: the scaling vector's map differs from the operator's row map");
-    auto S = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
+    Teuchos::RCP<CrsMatrix> S;
+    if (!isIterative() && !scaledWorking_.is_null() && scaledWorking_.get() != A.get() &&
+        scaledWorking_->getCrsGraph().get() == A->getCrsGraph().get()) {
+      S = scaledWorking_;
+      Kokkos::deep_copy(S->getLocalMatrixHost().values, A->getLocalMatrixHost().values);
+    } else {
+      S = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
+    }
+    scaledWorking_ = isIterative() ? Teuchos::null : S;
     S->leftScale(*D_);
     S->rightScale(*D_);
     working_ = S;

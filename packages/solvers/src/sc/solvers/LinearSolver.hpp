@@ -123,6 +123,10 @@ protected:
 private:
   Teuchos::RCP<const CrsMatrix> A_;        // the caller's operator
   Teuchos::RCP<const CrsMatrix> working_;  // D A D or A
+  // D A D of a direct solver, rewritten in place when the next operator has the same graph
+  // (the Newton steps of a contact solve): no new matrix per step. A Krylov solver's
+  // preconditioner may keep the previous operator, so it gets a new one each time.
+  Teuchos::RCP<CrsMatrix> scaledWorking_;
   Teuchos::RCP<const Vector> D_;
   BlockStructure blocks_;
   bool exploitSymmetry_ = true;

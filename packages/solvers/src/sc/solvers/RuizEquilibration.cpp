@@ -134,17 +134,27 @@ Teuchos::RCP<CrsMatrix> RuizEquilibration::scaledCopy(const CrsMatrix& A) const
               "Equilibration: scaledCopy() before compute()");
   // Copy shares A's (static) graph and deep-copies the values.
   auto B = Teuchos::rcp(new CrsMatrix(A, Teuchos::Copy));
+  scaleInto(A, *B);
+  return B;
+}
+
+void RuizEquilibration::scaleInto(const CrsMatrix& A, CrsMatrix& B) const
+{
+  SC_THROW_IF(rowScale_.is_null(), sc::core::InternalError,
+              "Equilibration: scaleInto() before compute()");
+  SC_THROW_IF(A.getCrsGraph().get() != B.getCrsGraph().get(), sc::core::InternalError,
+              "Equilibration: scaleInto() needs a target on the graph of the source matrix");
   Vector colScaleOnColMap(A.getColMap());
   colScaleOnColMap.doImport(*colScale_, Tpetra::Import<>(A.getDomainMap(), A.getColMap()),
                             Tpetra::INSERT);
   auto dr = rowScale_->getData(0);
   auto dc = colScaleOnColMap.getData(0);
-  const auto lclB = B->getLocalMatrixHost();
-  const auto nRows = static_cast<int>(B->getNodeNumRows());
+  const auto lclA = A.getLocalMatrixHost();
+  const auto lclB = B.getLocalMatrixHost();
+  const auto nRows = static_cast<int>(B.getNodeNumRows());
   for (int i = 0; i < nRows; ++i)
     for (auto k = lclB.graph.row_map(i); k < lclB.graph.row_map(i + 1); ++k)
-      lclB.values(k) *= dr[i] * dc[lclB.graph.entries(k)];
-  return B;
+      lclB.values(k) = lclA.values(k) * (dr[i] * dc[lclB.graph.entries(k)]);
 }
 
 }  // namespace sc::solvers

@@ -28,6 +28,9 @@ public:
 
   /// A fresh fill-complete copy of D_r A D_c (same graph as A).
   Teuchos::RCP<CrsMatrix> scaledCopy(const CrsMatrix& A) const;
+  /// D_r A D_c written into the values of B, which shares A's graph (a matrix from an earlier
+  /// scaledCopy of a matrix on that graph): no allocation, for repeated solves on one graph.
+  void scaleInto(const CrsMatrix& A, CrsMatrix& B) const;
 
   /// Row factors on A's range map, column factors on A's domain map.
   const Vector& rowScaling() const { return *rowScale_; }
