@@ -673,9 +673,12 @@ HertzCase hertz3DScene()
   h.nu = 0.25;
   h.displacement = 0.025;
   h.meshSize = 0.25;
-  // 9 sweeps of the elements with a Cap face within 0.22 of the bottom point: 8543 tets, 346k DOFs
-  // (6 sweeps, 139k DOFs: radius from the area +5.4%, p0 +5.0%, short of the 5% target).
-  h.localRefinements = 9;
+  // 6 sweeps of the elements with a Cap face within 0.22 of the bottom point: 3418 tets, 139k
+  // DOFs at k = 1. Measured 2026-12-02 on straight faces: radius from the area −2.2%, p0 +1.9%,
+  // outermost active point 1.04 a, 7 Newton steps, about 60 s (9 sweeps, 346k DOFs, were used
+  // until then: they took 4 minutes of every test run). Before the obstacle-normal frame and the
+  // Bernstein constraints of issue #11 this mesh gave +5.4% and +5.0%.
+  h.localRefinements = 6;
   h.refineRadius = 0.22;
   h.refineBoundary = "Cap";
   return h;
@@ -683,7 +686,15 @@ HertzCase hertz3DScene()
 }  // namespace
 
 namespace {
-void frictionless3D(const HertzCase& h, Teuchos::FancyOStream& out, bool& success)
+// Relative bounds of the 3D frictionless checks: radius (from the zone's area) and p0 against
+// the sphere formulas from the computed load, the outermost active point and the centre of
+// pressure's distance from the axis in units of a.
+struct Hertz3DBounds {
+  double radius = 0.05, p0 = 0.05, outermost = 1.15, centre = 0.01;
+};
+
+void frictionless3D(const HertzCase& h, const Hertz3DBounds& bounds, Teuchos::FancyOStream& out,
+                    bool& success)
 {
   // Sphere (Johnson 1985): a³ = 3PR/(4E*), p0 = 3P/(2πa²), with P the computed resultant.
   const auto r = solveHertz(h);
@@ -707,12 +718,13 @@ void frictionless3D(const HertzCase& h, Teuchos::FancyOStream& out, bool& succes
   Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_SUM, 3, local, global);
   const double centre = std::hypot(global[0], global[1]) / std::abs(global[2]);
   out << "centre of pressure at " << centre << " from the axis\n";
-  TEST_COMPARE(centre, <=, 0.01 * a);
+  TEST_COMPARE(centre, <=, bounds.centre * a);
   // Issue #5: radius and p0 within 5% of the sphere formulas from the computed load. Measured
   // (2026-11-22, docs/contact.md) +2.1% for the radius from the zone's area and +4.2% for p0; the
   // outermost active point overshoots by 13% because the discrete zone edge is ragged.
-  TEST_COMPARE(std::abs(r.summary.equivalentZoneSize - a), <=, 0.05 * a);
-  TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, 0.05 * p0);
+  TEST_COMPARE(P, >, 0.0);
+  TEST_COMPARE(std::abs(r.summary.equivalentZoneSize - a), <=, bounds.radius * a);
+  TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, bounds.p0 * p0);
   // No contact outside the zone: with point constraints in 3D, faces near the zone edge kept
   // active points out to 1.26 a with up to 14% of p0 (issue #11; docs/contact.md "Constraint
   // points"). Bernstein control points sit on vertices, so allow one vertex spacing beyond a.
@@ -723,30 +735,46 @@ void frictionless3D(const HertzCase& h, Teuchos::FancyOStream& out, bool& succes
   double rmaxAll = 0.0;
   Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_MAX, 1, &rmax, &rmaxAll);
   out << "outermost active point at " << rmaxAll / a << " a\n";
-  TEST_COMPARE(rmaxAll, <=, 1.15 * a);
+  TEST_COMPARE(rmaxAll, <=, bounds.outermost * a);
 }
 }  // namespace
 
-TEUCHOS_UNIT_TEST(Hertz, Frictionless3D) { frictionless3D(hertz3DScene(), out, success); }
+// Straight faces (Mesh/Geometry order = 1) at k = 1.
+TEUCHOS_UNIT_TEST(Hertz, Frictionless3D) { frictionless3D(hertz3DScene(), {}, out, success); }
 
 // Curved boundary elements in 3D (issue #11, item 4): the quadratic faces of the cap reach the
-// 5% of issue #5 on the 6-sweep mesh (139k DOFs), which straight faces miss (+5.4%, +5.0%).
+// 5% of issue #5 on the 6-sweep mesh (139k DOFs), as straight faces now do (Frictionless3D).
 // Measured 2026-12-01: radius from the area −2.4%, p0 −1.4%, outermost active point 1.04 a.
 TEUCHOS_UNIT_TEST(Hertz, CurvedFrictionless3D)
 {
   HertzCase h = hertz3DScene();
   h.geometryOrder = 2;
-  h.localRefinements = 6;
-  frictionless3D(h, out, success);
+  frictionless3D(h, {}, out, success);
 }
 
 // Degree 2 in 3D (issue #11): the same 5% on the 6-sweep mesh (k = 2 has 6 points per face).
+// About 10 minutes (a 3D k = 2 Newton step factorises ~50M nonzeros): label `long`.
 TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless3D)
 {
   HertzCase h = hertz3DScene();
   h.degree = 2;
-  h.localRefinements = 6;
-  frictionless3D(h, out, success);
+  frictionless3D(h, {}, out, success);
+}
+
+// Degree 2 in 3D on a coarse mesh (initial size 0.4, 3 sweeps: 41k DOFs, 13 active points, about
+// 30 s), in every test run: the resultant pushes (the k = 2 defect of issue #11 pulled), points
+// to the axis, and the radius and p0 are those of Hertz up to the resolution of a zone 2-3
+// elements wide (measured 2026-12-02: radius from the area −24.6%, p0 +44.2%, outermost active
+// point 1.37 a, centre of pressure 0.083 a from the axis: the coarse unstructured mesh is not
+// symmetric; with 4 sweeps of the 0.25 mesh −12.4% and +9.4%, with 6 sweeps within 5%: the
+// `long` test above). Bounds: 30%, 55%, 1.5 a, 0.12 a.
+TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless3DCoarse)
+{
+  HertzCase h = hertz3DScene();
+  h.degree = 2;
+  h.meshSize = 0.4;
+  h.localRefinements = 3;
+  frictionless3D(h, {0.30, 0.55, 1.5, 0.12}, out, success);
 }
 
 // 2D degree 2 (serial, expensive at 8 sweeps: 109k DOFs, about 20 s each).
@@ -803,7 +831,7 @@ void coulomb3D(const HertzCase& h, Teuchos::FancyOStream& out, bool& success)
 }  // namespace
 
 // On the default geometry (curved faces, Mesh/Geometry order = 2) and the 6-sweep mesh that
-// meets Hertz there (139k DOFs; the straight 9-sweep mesh took 170 s of the test budget). The
+// meets Hertz there (139k DOFs). The
 // friction law itself does not depend on the geometry; straight faces keep Coulomb 3D at k = 2
 // (Degree2Coulomb3D) and the frictionless checks at k = 1, 2.
 TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
@@ -812,20 +840,21 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
   h.law = sc::core::FrictionLaw::Coulomb;
   h.mu = 0.4;
   h.geometryOrder = 2;
-  h.localRefinements = 6;
   coulomb3D(h, out, success);
 }
 
-// 3D Coulomb at k = 2 (accepted for contact since issue #11): the same checks as k = 1 on the
-// 4-sweep mesh (209k DOFs; measured 2026-12-01: 12 Newton steps, 38 stick / 88 slip points, the
-// friction disc to 3e-13).
+// 3D Coulomb at k = 2 (accepted for contact since issue #11): the same checks as k = 1, which
+// hold on any mesh, on the coarse mesh of Degree2Frictionless3DCoarse (41k DOFs; measured
+// 2026-12-02: 9 Newton steps, 5 stick / 9 slip points, about 50 s; on the 4-sweep mesh of the
+// 0.25 mesh, 209k DOFs: 12 steps, 38 / 88 points, 5 minutes).
 TEUCHOS_UNIT_TEST(Hertz, Degree2Coulomb3D)
 {
   HertzCase h = hertz3DScene();
   h.law = sc::core::FrictionLaw::Coulomb;
   h.mu = 0.4;
   h.degree = 2;
-  h.localRefinements = 4;
+  h.meshSize = 0.4;
+  h.localRefinements = 3;
   coulomb3D(h, out, success);
 }
 #endif  // SC_HERTZ_3D
