@@ -15,8 +15,7 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include <sc/adapt/Marker.hpp>
-#include <sc/adapt/StopCriteria.hpp>
+#include <sc/adapt/AdaptiveLoop.hpp>
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
@@ -108,8 +107,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   estimatorSettings_ = estimator::EstimatorSettings::fromParameters(params_->sublist("Estimator"));
   adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
-  marker_ = adapt::createMarker(adaptivity_);
-  stop_ = std::make_unique<adapt::StopCriteria>(adaptivity_);
+  loop_ = std::make_unique<adapt::AdaptiveLoop>(adaptivity_, comm_, &progress_, &timers_);
 
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
@@ -218,15 +216,15 @@ void Simulation::warnIfLargeDisplacement() const
               << 100.0 * kLargeDisplacementFraction << "%)." << std::endl;
 }
 
-void Simulation::refineMesh()
+void Simulation::refine(const adapt::Marking& marking)
 {
   const long long before = mesh_->numElements();
   const Teuchos::RCP<const mesh::SimplexMesh> previous = mesh_;
   const mesh::RefinementStep* step = nullptr;
   {
     auto t = timers_.scope("refine");
-    if (adaptivity_.needsIndicators()) {
-      step = &refiner_->refine(marked_);
+    if (!marking.uniform) {
+      step = &refiner_->refine(marking.elements);
     } else {
       // Uniform: dim bisections of every element (exactly ×4 in 2D), as in convergence studies.
       step = &refiner_->refineUniformly();
@@ -243,6 +241,15 @@ void Simulation::refineMesh()
   mesh_ = refiner_->mesh();
   progress_.report("refine", adaptivity_.marking + ": " + std::to_string(before) + " -> " +
                                  std::to_string(mesh_->numElements()) + " elements");
+}
+
+void Simulation::solve(int cycle)
+{
+  partitionMesh();
+  if (boundaryConditions_.hasContact())
+    solveContact(cycle);
+  else
+    solveElasticity();
 }
 
 void Simulation::partitionMesh()
@@ -392,7 +399,23 @@ void Simulation::solveContact(int cycle)
   }
 }
 
-void Simulation::estimate()
+adapt::CycleEstimate Simulation::estimate(int /*cycle*/)
+{
+  estimateError();
+  adapt::CycleEstimate e;
+  e.dofs = solved_ ? space_->numGlobalDofs() : 0;
+  e.numElements = mesh_->numElements();
+  if (estimate_) {
+    e.available = true;
+    e.eta = estimate_->total();
+    e.norm = estimate_->stressEnergyNorm;
+    e.ownedElements = space_->ownedElements();
+    e.indicators = estimate_->indicators;
+  }
+  return e;
+}
+
+void Simulation::estimateError()
 {
   estimate_.reset();
   stressEnergyError_ = -1.0;
@@ -427,52 +450,59 @@ void Simulation::estimate()
   progress_.report("estimate", os.str());
 }
 
-std::string Simulation::checkStop(int cycle)
+adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marking) const
 {
-  const double eta = estimate_ ? estimate_->total() : -1.0;
-  const double norm = estimate_ ? estimate_->stressEnergyNorm : -1.0;
-  return stop_->reason(cycle, solved_ ? space_->numGlobalDofs() : 0, eta, norm);
-}
-
-std::string Simulation::checkNextMesh() const
-{
+  adapt::NextMeshForecast f;
   if (!limit_.active() || space_.is_null() || mesh_->numElements() == 0)
-    return "";
+    return f;  // no limit
   const double n = mesh_->numElements();
   const int d = problem_.dimension;
   // Uniform: exactly 2^d per element; marked: each with its closure, at most a uniform level.
   const double uniform = n * (d == 2 ? 4.0 : 8.0);
-  const double next = adaptivity_.needsIndicators()
+  const double next = !marking.uniform
                           ? std::min(uniform, n + mesh::closureFactor(d, false) *
-                                                      static_cast<double>(marked_.size()))
+                                                      static_cast<double>(marking.elements.size()))
                           : uniform;
-  const double nextDofs = static_cast<double>(space_->numGlobalDofs()) * next / n;
-  const double bytes = nextDofs * mesh::bytesPerDof(d) + limit_.ranks * next * mesh::kMeshBytesPerElement;
-  return stop_->memoryReason(nextDofs, bytes, limit_.memoryBytes, limit_.memorySource);
+  f.dofs = static_cast<double>(space_->numGlobalDofs()) * next / n;
+  f.bytes = f.dofs * mesh::bytesPerDof(d) + limit_.ranks * next * mesh::kMeshBytesPerElement;
+  f.limitBytes = limit_.memoryBytes;
+  f.limitSource = limit_.memorySource;
+  return f;
 }
 
-void Simulation::mark()
+void Simulation::output(int cycle, const adapt::Marking& marking, const std::string& stopReason)
 {
-  marked_.clear();
-  if (!adaptivity_.needsIndicators())
-    return;
-  auto t = timers_.scope("mark");
-  marked_ = marker_->mark(mesh_->numElements(), space_->ownedElements(), estimate_->indicators, *comm_);
-  progress_.report("mark", marker_->name() + ": " + std::to_string(marked_.size()) + " of " +
-                               std::to_string(mesh_->numElements()) + " elements");
+  writeFields(cycle);
+  killIfAsked(cycle);
+  recordCycle(cycle, marking, stopReason);
+  recordCost();
+  summary_->write();
+}
+
+void Simulation::checkpoint(int cycle, const adapt::Marking& marking)
+{
+  const double start = Teuchos::Time::wallTime();
+  writeCheckpoint(cycle, marking.elements);
+  // Its time is known only after the summary record was written (and copied into the
+  // checkpoint): summary.json has it from the next write on (the next cycle's, or the last).
+  double seconds = Teuchos::Time::wallTime() - start, slowest = 0.0;
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(slowest));
+  summary_->currentCycle()["timings"]["checkpoint"] = slowest;
 }
 
 void Simulation::checkScene()
 {
   setupMesh();
   // --check --restart DIR: is the checkpoint readable and of this deck?
-  if (!restartDirectory_.empty())
-    readCheckpoint();
+  if (!restartDirectory_.empty()) {
+    std::vector<int> marked;
+    readCheckpoint(marked);
+  }
   // Would the run be able to create and write its output directory? (creates nothing)
   io::checkOutputDirectory(output_.directory, *comm_);
 }
 
-void Simulation::recordCycle(int cycle)
+void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason)
 {
   nlohmann::ordered_json& c = summary_->addCycle(cycle);
   c["elements"] = mesh_->numElements();
@@ -529,11 +559,11 @@ void Simulation::recordCycle(int cycle)
       eta["stress_energy_error"] = stressEnergyError_;
       eta["efficiency_index"] = estimate_->total() / stressEnergyError_;
     }
-    if (adaptivity_.needsIndicators() && stopReason_.empty())
-      eta["marked_elements"] = marked_.size();
+    if (!marking.uniform && stopReason.empty())
+      eta["marked_elements"] = marking.elements.size();
   }
-  if (!stopReason_.empty())
-    c["stop_reason"] = stopReason_;
+  if (!stopReason.empty())
+    c["stop_reason"] = stopReason;
   if (solved_) {
     c["dofs"] = {{"stress", space_->numStressDofs()},
                  {"displacement", space_->numDisplacementDofs()},
@@ -753,7 +783,8 @@ void Simulation::run()
   setupMesh();
   // --restart: the checkpoint is read and checked before anything is written (a bad or foreign
   // checkpoint is an input error that leaves the directory as it was).
-  const int firstCycle = restartDirectory_.empty() ? 0 : readCheckpoint();
+  std::vector<int> marked;  // the checkpoint's marking for its next cycle
+  const int firstCycle = restartDirectory_.empty() ? 0 : readCheckpoint(marked);
 
   io::createOutputDirectory(output_.directory, *comm_);
   // The run owns its directory: an earlier run's summary, fields and CSVs go before anything is
@@ -778,42 +809,7 @@ void Simulation::run()
     restoreOutputs();
 
   try {
-    for (int cycle = firstCycle;; ++cycle) {
-      progress_.setCycle(cycle, adaptivity_.cycles);
-      if (cycle > 0)
-        refineMesh();
-      partitionMesh();
-      if (boundaryConditions_.hasContact())
-        solveContact(cycle);
-      else
-        solveElasticity();
-      estimate();
-      stopReason_ = checkStop(cycle);
-      marked_.clear();
-      if (stopReason_.empty())
-        mark();
-      if (stopReason_.empty())
-        stopReason_ = checkNextMesh();
-      writeFields(cycle);
-      killIfAsked(cycle);
-      recordCycle(cycle);
-      recordCost();
-      summary_->write();
-      // The next cycle can start from here (a run that stops now needs no checkpoint).
-      if (stopReason_.empty()) {
-        const double start = Teuchos::Time::wallTime();
-        writeCheckpoint(cycle);
-        // Its time is known only after the summary record was written (and copied into the
-        // checkpoint): summary.json has it from the next write on (the next cycle's, or the last).
-        double seconds = Teuchos::Time::wallTime() - start, slowest = 0.0;
-        Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(slowest));
-        summary_->currentCycle()["timings"]["checkpoint"] = slowest;
-      }
-      if (!stopReason_.empty()) {
-        progress_.report("stop", stopReason_);
-        break;
-      }
-    }
+    loop_->run(*this, firstCycle, std::move(marked));
     // A scene whose contact could not be solved (issue #5) is not "converged".
     summary_->setConverged(solved_);
     summary_->write();

@@ -1,13 +1,15 @@
 #pragma once
 // One run of StressContact, in the deal.II tutorial shape: a constructor that reads and checks
-// everything, then run() = for each cycle { refine, solve, estimate, mark, output }, until a
-// stop criterion of sc::adapt holds (Cycles, Max DOFs, Target error).
+// everything, then run() sets up the output (directory, summary.json, restart) and hands itself
+// to sc::adapt::AdaptiveLoop, which calls the named steps of adapt::AdaptiveProblem for each
+// cycle { refine, solve, estimate, (mark), output, checkpoint } until a stop criterion holds
+// (Cycles, Max DOFs, Target error, the memory forecast of the next mesh).
 //
 // What each cycle does depends on what the scene needs (docs/theory.md): no contact machinery
-// without a Contact boundary, no friction rows when the law is None or μ_F = 0. Phases that do
-// not exist yet (the contact terms of the estimator, η_CF) are reported as absent in
-// summary.json ("phases_missing"), never faked: a contact scene is not estimated and can only be
-// refined uniformly.
+// without a Contact boundary, no friction rows when the law is None or μ_F = 0. Every scene is
+// estimated (η without contact, η_CF with the contact and friction parts) and can be refined by
+// any marking. summary.json keeps the list "phases_missing" for phases this build cannot run;
+// it is empty now (a phase that is missing is reported there, never faked).
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_MultiVector_fwd.hpp>
 
+#include <sc/adapt/AdaptiveProblem.hpp>
 #include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
@@ -51,9 +54,8 @@ class ErrorEstimator;
 struct ErrorEstimate;
 }  // namespace sc::estimator
 namespace sc::adapt {
-class Marker;
-class StopCriteria;
-}  // namespace sc::adapt
+class AdaptiveLoop;
+}
 namespace sc::contact {
 class ActiveSetSolver;
 struct ContactPoint;
@@ -65,21 +67,22 @@ namespace sc::app {
 /// draws a small-strain warning.
 inline constexpr double kLargeDisplacementFraction = 0.05;
 
-class Simulation {
+class Simulation : public adapt::AdaptiveProblem {
 public:
   /// Reads the validated parameter list; throws InputError for combinations that this build
   /// cannot run (e.g. contact at an unsupported degree, no Displacement boundary), before any
   /// work.
   Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
              Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath, bool quiet);
-  ~Simulation();
+  ~Simulation() override;
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
   /// `--check`: build the initial mesh and check the boundary conditions against it. Writes
   /// nothing.
   void checkScene();
-  /// All cycles; writes summary.json after each cycle and XDMF output.
+  /// All cycles (adapt::AdaptiveLoop over the steps below); writes summary.json after each cycle
+  /// and XDMF output.
   void run();
 
   /// `--restart DIR`: run() continues the run whose output directory (this run's Output/Directory)
@@ -87,34 +90,46 @@ public:
   void restartFrom(std::string directory) { restartDirectory_ = std::move(directory); }
 
 private:
+  // The steps of adapt::AdaptiveProblem, called by the loop (AdaptiveLoop.hpp for their order).
+  /// Bisect the marked elements (or every element, uniformly), then compute the parents of the
+  /// new boundary faces for the contact state's transfer and forget the refinement history.
+  void refine(const adapt::Marking& marking) override;
+  /// Partition, then set up, assemble and solve (elasticity, or the contact Newton loop).
+  void solve(int cycle) override;
+  /// Reconstruction and η (η_CF with contact); the DOFs, η, ‖A^{1/2}σ_h‖ and η_T² for the loop.
+  adapt::CycleEstimate estimate(int cycle) override;
+  /// The next mesh's DOFs and bytes against the memory limit (estimated from the marked
+  /// elements and the current DOFs per element); no limit when none is active.
+  adapt::NextMeshForecast forecastNextMesh(const adapt::Marking& marking) const override;
+  /// Fields (XDMF), the cycle's summary record, its cost, summary.json.
+  void output(int cycle, const adapt::Marking& marking, const std::string& stopReason) override;
+  /// checkpoint.h5, timed into summary.json's "checkpoint" phase.
+  void checkpoint(int cycle, const adapt::Marking& marking) override;
+
   void setupMesh();
   void warnIfLargeDisplacement() const;
-  void refineMesh();
   void partitionMesh();
   void setupElasticity();
   /// Hand the solver the scaling and (Krylov) the block structure of the assembled system.
   void prepareSolver();
   void solveElasticity();
   void solveContact(int cycle);
-  void estimate();
-  /// The reason to stop after this cycle ("" = go on), then the marking for the next one.
-  std::string checkStop(int cycle);
-  /// After marking: "" or the reason to stop because the next mesh would exceed the memory
-  /// limit (estimated from the marked elements and the current DOFs per element).
-  std::string checkNextMesh() const;
-  void mark();
+  /// The reconstruction and estimate of the cycle (estimate_; none if nothing was solved), and
+  /// the error against the exact solution when there is one.
+  void estimateError();
   void writeFields(int cycle);
-  void recordCycle(int cycle);
+  void recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason);
   /// The cycle's timings and peak memory into summary.json, and its one-line progress summary.
   void recordCost();
 
   // Checkpoint/restart (SimulationCheckpoint.cpp; issue #12, item 7).
-  /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5.
-  void writeCheckpoint(int cycle);
+  /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5 with the
+  /// elements `marked` for the next cycle.
+  void writeCheckpoint(int cycle, const std::vector<int>& marked);
   /// Collective, before anything is written: read the checkpoint of restartDirectory_, check it
-  /// belongs to this deck, restore the refiner (mesh of its cycle), the marked elements and the
-  /// contact state. Returns the cycle to continue with.
-  int readCheckpoint();
+  /// belongs to this deck, restore the refiner (mesh of its cycle), the marked elements (into
+  /// `marked`) and the contact state. Returns the cycle to continue with.
+  int readCheckpoint(std::vector<int>& marked);
   /// After the output directory is set up: the checkpoint's summary cycles and XDMF steps.
   void restoreOutputs();
   /// SC_KILL_IN_CYCLE (test only): kill the process in that cycle, after its fields are written.
@@ -141,9 +156,10 @@ private:
   mesh::ResourceLimit limit_;  ///< Mesh/Memory limit (GB) or the available memory (rank 0's)
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
   std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element
-  std::vector<std::string> phasesMissing_;
-  std::unique_ptr<adapt::Marker> marker_;
-  std::unique_ptr<adapt::StopCriteria> stop_;
+  std::vector<std::string> phasesMissing_;  ///< phases this build cannot run (none now)
+  /// The cycle loop with its marker and stop criteria (built in the constructor so that bad
+  /// Adaptivity values fail before any work).
+  std::unique_ptr<adapt::AdaptiveLoop> loop_;
 
   // Mixed elasticity (no contact boundary): spaces, system, solver, solution of the cycle.
   std::unique_ptr<core::ExactSolution> exact_;
@@ -154,12 +170,10 @@ private:
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;
   bool solved_ = false;
 
-  // Estimate and marking of the cycle (elasticity scenes).
+  // Estimate of the cycle.
   std::unique_ptr<estimator::ErrorEstimator> estimator_;
   std::unique_ptr<estimator::ErrorEstimate> estimate_;
   double stressEnergyError_ = -1.0;  ///< ‖A^{1/2}(σ − σ_h)‖ when the exact solution is known
-  std::vector<int> marked_;          ///< elements to bisect for the next cycle
-  std::string stopReason_;
 
   // Contact (a boundary of Type Contact): the active-set solver of the cycle and the points of
   // the previous cycle (nested iteration: the next cycle starts from their state).

@@ -93,9 +93,9 @@ std::vector<T> narrow(const std::vector<long long>& v)
 
 }  // namespace
 
-void Simulation::writeCheckpoint(int cycle)
+void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
 {
-  // Timed by run() as the cycle's "checkpoint" phase, which summary.json shows from its next
+  // Timed by checkpoint() as the cycle's "checkpoint" phase, which summary.json shows from its next
   // write on (the checkpoint copies the cycle's record before its own time is known).
   // The contact points of this cycle, every rank's in rank order, with their face (in the mesh
   // of this cycle, which the checkpoint holds) and index in it: on restart rank 0 holds them all,
@@ -138,7 +138,7 @@ void Simulation::writeCheckpoint(int cycle)
     cp.setInts("mesh_curved_edges", {s.curvedEdges.begin(), s.curvedEdges.end()});
     cp.setInts("mesh_curved_edge_parts", {s.curvedEdgeParts.begin(), s.curvedEdgeParts.end()});
 
-    cp.setInts("marked_elements", {marked_.begin(), marked_.end()});
+    cp.setInts("marked_elements", {marked.begin(), marked.end()});
     cp.setInts("contact_point_stride", {d + 5});
     cp.setDoubles("contact_points", std::move(points));
 
@@ -152,7 +152,7 @@ void Simulation::writeCheckpoint(int cycle)
   });
 }
 
-int Simulation::readCheckpoint()
+int Simulation::readCheckpoint(std::vector<int>& marked)
 {
   const std::string path = checkpointPath(restartDirectory_);
   // Every rank reads the file (read-only): the data are global.
@@ -214,8 +214,8 @@ int Simulation::readCheckpoint()
   if (mesh_->numElements() != scalar("mesh_elements") || mesh_->numVertices() != scalar("mesh_vertices"))
     bad("holds a mesh that does not rebuild to its recorded size (damaged)");
 
-  marked_ = narrow<int>(cp.ints("marked_elements"));
-  for (int e : marked_)
+  marked = narrow<int>(cp.ints("marked_elements"));
+  for (int e : marked)
     if (e < 0 || e >= mesh_->numElements())
       bad("marks an element that its mesh does not have (damaged)");
 
@@ -268,7 +268,7 @@ int Simulation::readCheckpoint()
 
   std::ostringstream os;
   os << "restart from " << path << ": cycle " << cycle << " complete (" << mesh_->numElements()
-     << " elements, " << marked_.size() << " marked), continuing with cycle " << cycle + 1;
+     << " elements, " << marked.size() << " marked), continuing with cycle " << cycle + 1;
   if (ranksBefore != comm_->getSize())
     os << "; written on " << ranksBefore << " rank(s), now " << comm_->getSize()
        << ": the cycles after it match a run on " << comm_->getSize()

@@ -1,0 +1,82 @@
+#include "sc/adapt/AdaptiveLoop.hpp"
+
+#include <optional>
+
+#include <sc/adapt/Marker.hpp>
+#include <sc/adapt/StopCriteria.hpp>
+#include <sc/core/Error.hpp>
+#include <sc/core/Progress.hpp>
+#include <sc/core/Timers.hpp>
+
+namespace sc::adapt {
+
+AdaptiveLoop::AdaptiveLoop(const AdaptivitySettings& settings,
+                           Teuchos::RCP<const Teuchos::Comm<int>> comm, core::Progress* progress,
+                           core::PhaseTimers* timers)
+  : settings_(settings), comm_(std::move(comm)), progress_(progress), timers_(timers),
+    marker_(createMarker(settings)), stop_(std::make_unique<StopCriteria>(settings))
+{
+  SC_THROW_IF(comm_.is_null(), core::InternalError, "AdaptiveLoop needs a communicator");
+}
+
+AdaptiveLoop::~AdaptiveLoop() = default;
+
+std::string AdaptiveLoop::run(AdaptiveProblem& problem, int firstCycle,
+                              std::vector<int> markedBeforeFirstCycle)
+{
+  SC_THROW_IF(firstCycle < 0, core::InternalError, "first cycle " << firstCycle);
+  Marking marking;
+  marking.uniform = !settings_.needsIndicators();
+  if (!marking.uniform)
+    marking.elements = std::move(markedBeforeFirstCycle);
+  for (int cycle = firstCycle;; ++cycle) {
+    if (progress_)
+      progress_->setCycle(cycle, settings_.cycles);
+    if (cycle > 0)
+      problem.refine(marking);
+    problem.solve(cycle);
+    const CycleEstimate estimate = problem.estimate(cycle);
+    std::string reason = stop_->reason(cycle, estimate.dofs, estimate.available ? estimate.eta : -1.0,
+                                       estimate.available ? estimate.norm : -1.0);
+    marking = Marking();
+    marking.uniform = !settings_.needsIndicators();
+    if (reason.empty()) {
+      marking = mark(estimate);
+      const NextMeshForecast next = problem.forecastNextMesh(marking);
+      reason = stop_->memoryReason(next.dofs, next.bytes, next.limitBytes, next.limitSource);
+    }
+    if (!reason.empty())
+      marking.elements.clear();  // nothing is refined after the last cycle
+    problem.output(cycle, marking, reason);
+    if (!reason.empty()) {
+      if (progress_)
+        progress_->report("stop", reason);
+      return reason;
+    }
+    // The next cycle can start from here (a run that stops now needs no checkpoint).
+    problem.checkpoint(cycle, marking);
+  }
+}
+
+Marking AdaptiveLoop::mark(const CycleEstimate& estimate) const
+{
+  Marking marking;
+  marking.uniform = !settings_.needsIndicators();
+  if (marking.uniform)
+    return marking;
+  SC_THROW_IF(!estimate.available, core::InternalError,
+              "'Adaptivity/Marking' = " << settings_.marking
+                                        << " needs element indicators, but the cycle has no estimate");
+  std::optional<core::PhaseTimers::Scope> t;
+  if (timers_)
+    t.emplace(*timers_, "mark");
+  marking.elements =
+      marker_->mark(estimate.numElements, estimate.ownedElements, estimate.indicators, *comm_);
+  t.reset();
+  if (progress_)
+    progress_->report("mark", marker_->name() + ": " + std::to_string(marking.elements.size()) +
+                                  " of " + std::to_string(estimate.numElements) + " elements");
+  return marking;
+}
+
+}  // namespace sc::adapt

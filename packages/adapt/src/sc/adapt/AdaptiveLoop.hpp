@@ -1,0 +1,71 @@
+#pragma once
+// The adaptive loop (docs/theory.md §"Adaptivity", docs/architecture.md "The adaptive loop"):
+//
+//   for cycle = first, first + 1, ...:
+//     refine(marking of the previous cycle)          (not in cycle 0)
+//     solve(cycle); estimate(cycle)
+//     stop criteria: Cycles, Max DOFs, Target error
+//     if going on: mark; the next mesh's memory forecast (may stop the run)
+//     output(cycle, marking, stop reason)
+//     if going on: checkpoint(cycle, marking), else return the stop reason
+//
+// It owns the Marker and the StopCriteria built from the `Adaptivity` settings (so a bad
+// setting fails when the loop is built, before any work); the problem (AdaptiveProblem.hpp)
+// owns everything else. Refinement happens at the start of the next cycle so that its progress
+// lines and timings count towards the cycle whose mesh it builds, and so that a restart from a
+// checkpoint of cycle N is run(problem, N + 1, marking saved with it).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <sc/adapt/AdaptiveProblem.hpp>
+#include <sc/adapt/AdaptivitySettings.hpp>
+
+namespace sc::core {
+class Progress;
+class PhaseTimers;
+}  // namespace sc::core
+
+namespace sc::adapt {
+
+class Marker;
+class StopCriteria;
+
+class AdaptiveLoop {
+public:
+  /// Throws core::InputError for settings out of range. `progress` (cycle numbers, the marking
+  /// and stop lines) and `timers` (the "mark" phase) are optional and borrowed: they must
+  /// outlive the loop.
+  AdaptiveLoop(const AdaptivitySettings& settings, Teuchos::RCP<const Teuchos::Comm<int>> comm,
+               core::Progress* progress = nullptr, core::PhaseTimers* timers = nullptr);
+  ~AdaptiveLoop();
+  AdaptiveLoop(const AdaptiveLoop&) = delete;
+  AdaptiveLoop& operator=(const AdaptiveLoop&) = delete;
+
+  /// Cycles from `firstCycle` until a stop criterion holds; returns its reason. A restart passes
+  /// the cycle after its checkpoint's and the marking saved with it (Marking::elements; the
+  /// loop sets Marking::uniform from the settings). Exceptions of the problem's steps pass
+  /// through.
+  std::string run(AdaptiveProblem& problem, int firstCycle = 0,
+                  std::vector<int> markedBeforeFirstCycle = {});
+
+  const AdaptivitySettings& settings() const { return settings_; }
+  const Marker& marker() const { return *marker_; }
+  const StopCriteria& stopCriteria() const { return *stop_; }
+
+private:
+  /// The marking of a cycle that goes on.
+  Marking mark(const CycleEstimate& estimate) const;
+
+  AdaptivitySettings settings_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  core::Progress* progress_;
+  core::PhaseTimers* timers_;
+  std::unique_ptr<Marker> marker_;
+  std::unique_ptr<StopCriteria> stop_;
+};
+
+}  // namespace sc::adapt
