@@ -12,7 +12,7 @@ struct AdaptivitySettings {
   int cycles = 0;                ///< refinement cycles after the first solve
   std::string marking = "Dorfler";  ///< a name known to createMarker (Marker.hpp)
   double bulkParameter = 0.5;    ///< θ ∈ (0, 1] of Dörfler / maximum marking
-  long long maxDofs = 0;         ///< no refinement once a solved cycle has this many DOFs
+  long long maxDofs = 2000000;   ///< no refinement once a solved cycle has this many DOFs (the deck default)
   double targetError = 0.0;      ///< stop when η ≤ targetError · ‖A^{1/2}σ_h‖ (0: never)
 
   /// Marking needs element indicators (every strategy but Uniform).
