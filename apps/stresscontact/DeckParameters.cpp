@@ -75,7 +75,7 @@ std::string defaultDeckPath()
 {
   if (const char* env = std::getenv("STRESSCONTACT_DEFAULT_DECK"))
     return env;
-  for (const std::string dir : {std::string(SC_SOURCE_INPUT_DIR), std::string(SC_INSTALL_INPUT_DIR)})
+  for (const std::string& dir : {std::string(SC_SOURCE_INPUT_DIR), std::string(SC_INSTALL_INPUT_DIR)})
     if (!dir.empty() && std::ifstream(dir + "/hertz2d.xml"))
       return dir + "/hertz2d.xml";
   SC_THROW_IF(true, core::InputError,

@@ -243,11 +243,11 @@ void Simulation::refine(const adapt::Marking& marking)
                                  std::to_string(mesh_->numElements()) + " elements");
 }
 
-void Simulation::solve(int cycle)
+void Simulation::solve(int /*cycle*/)
 {
   partitionMesh();
   if (boundaryConditions_.hasContact())
-    solveContact(cycle);
+    solveContact();
   else
     solveElasticity();
 }
@@ -323,7 +323,7 @@ void Simulation::solveElasticity()
   solved_ = true;
 }
 
-void Simulation::solveContact(int cycle)
+void Simulation::solveContact()
 {
   setupElasticity();
   {
@@ -366,37 +366,29 @@ void Simulation::solveContact(int cycle)
   progress_.report("contact solve", os.str());
   previousPoints_ = contactSolver_->points();
   solved_ = true;
+}
 
-  if (output_.writeContactCsv) {
-    auto t = timers_.scope("output");
-    const int d = problem_.dimension;
-    std::vector<std::string> header = {"x", "y"};
-    if (d == 3)
-      header.push_back("z");
-    header.insert(header.end(), {"sigma_n", "sigma_t"});
-    if (d == 3)
-      header.push_back("sigma_t2");
-    header.insert(header.end(), {"weighted_gap", "weighted_slip", "status"});
-    io::CsvWriter csv(header);
-    for (const auto& p : contactSolver_->points()) {
-      // Filled by index, not push_back: GCC 12 warns (-Wmaybe-uninitialized, a false positive)
-      // about moving std::variant<double, std::string> when a vector of them grows.
-      io::CsvWriter::Row row(header.size());
-      std::size_t col = 0;
-      for (int i = 0; i < d; ++i)
-        row[col++] = p.x[i];
-      row[col++] = p.sigmaN;
-      for (int k = 0; k < d - 1; ++k)
-        row[col++] = p.sigmaT[k];
-      row[col++] = p.gap - p.rN;  // G − r_N ≥ 0: weighted gap left open
-      row[col++] = d == 2 ? p.rT[0] : std::hypot(p.rT[0], p.rT[1]);
-      row[col++] = contact::toString(p.status);
-      csv.addRow(std::move(row));
-    }
-    char name[64];
-    std::snprintf(name, sizeof(name), "/contact_cycle%d.csv", cycle);
-    csv.writeGathered(*comm_, output_.directory + name);
+void Simulation::writeContactTable(int cycle)
+{
+  if (!output_.writeContactCsv || !contactSolver_ || !solved_)
+    return;
+  auto t = timers_.scope("output");
+  const int d = problem_.dimension;
+  const auto header = contact::csvColumns(d);
+  io::CsvWriter csv(header);
+  for (const auto& p : contactSolver_->points()) {
+    // Filled by index, not push_back: GCC 12 warns (-Wmaybe-uninitialized, a false positive)
+    // about moving std::variant<double, std::string> when a vector of them grows.
+    io::CsvWriter::Row row(header.size());
+    std::size_t col = 0;
+    for (double v : contact::csvValues(p, d))
+      row[col++] = v;
+    row[col] = contact::toString(p.status);
+    csv.addRow(std::move(row));
   }
+  char name[64];
+  std::snprintf(name, sizeof(name), "/contact_cycle%d.csv", cycle);
+  csv.writeGathered(*comm_, output_.directory + name);
 }
 
 adapt::CycleEstimate Simulation::estimate(int /*cycle*/)
@@ -472,6 +464,7 @@ adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marki
 
 void Simulation::output(int cycle, const adapt::Marking& marking, const std::string& stopReason)
 {
+  writeContactTable(cycle);
   writeFields(cycle);
   killIfAsked(cycle);
   recordCycle(cycle, marking, stopReason);
@@ -743,20 +736,14 @@ void Simulation::writeFields(int cycle)
   }
   if (contactSolver_) {
     // Mean contact pressure −σ_N and tangential traction of each contact face's points.
-    std::map<int, std::array<double, 3>> perFace;  // face -> (Σ −σ_N, Σ σ_T1, count)
-    for (const auto& p : contactSolver_->points()) {
-      auto& acc = perFace[p.face];
-      acc[0] += -p.sigmaN;
-      acc[1] += p.sigmaT[0];
-      acc[2] += 1.0;
-    }
+    const auto means = contact::faceMeans(contactSolver_->points());
     std::vector<double> pressure, shear;
     for (int f : mesh_->boundaryFaces()) {
       if (elementOwner_[mesh_->faceElements(f)[0]] != rank)
         continue;
-      auto it = perFace.find(f);
-      pressure.push_back(it == perFace.end() ? 0.0 : it->second[0] / it->second[2]);
-      shear.push_back(it == perFace.end() ? 0.0 : it->second[1] / it->second[2]);
+      auto it = means.find(f);
+      pressure.push_back(it == means.end() ? 0.0 : it->second.pressure);
+      shear.push_back(it == means.end() ? 0.0 : it->second.shear);
     }
     boundary.addCellField("contact_pressure", io::FieldKind::Scalar, std::move(pressure));
     boundary.addCellField("tangential_traction", io::FieldKind::Scalar, std::move(shear));

@@ -113,11 +113,13 @@ private:
   /// Hand the solver the scaling and (Krylov) the block structure of the assembled system.
   void prepareSolver();
   void solveElasticity();
-  void solveContact(int cycle);
+  void solveContact();
   /// The reconstruction and estimate of the cycle (estimate_; none if nothing was solved), and
   /// the error against the exact solution when there is one.
   void estimateError();
   void writeFields(int cycle);
+  /// The contact CSV of the cycle (contact_cycle<N>.csv): one row per contact point.
+  void writeContactTable(int cycle);
   void recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason);
   /// The cycle's timings and peak memory into summary.json, and its one-line progress summary.
   void recordCost();

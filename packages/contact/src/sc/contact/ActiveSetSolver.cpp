@@ -25,15 +25,6 @@
 
 namespace sc::contact {
 
-std::string toString(PointStatus s)
-{
-  switch (s) {
-  case PointStatus::Free: return "free";
-  case PointStatus::Stick: return "stick";
-  case PointStatus::Slip: return "slip";
-  }
-  return "?";
-}
 
 Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
 {

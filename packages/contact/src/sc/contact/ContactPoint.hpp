@@ -1,0 +1,56 @@
+#pragma once
+// Contact points: the constraints of the contact solver (built by ActiveSetSolver from the contact
+// faces, evaluated after each Newton step, carried to the next mesh by
+// ActiveSetSolver::transferState) and how they tabulate themselves for the outputs (the contact
+// CSV and the per-face fields of the XDMF output, docs/output.md).
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sc::contact {
+
+enum class PointStatus { Free = 0, Stick = 1, Slip = 2 };
+std::string toString(PointStatus s);
+
+/// One contact constraint: a coefficient of the normal traction on a contact face (DESIGN §3,
+/// docs/contact.md "Constraint points"). Either a face DOF point p (the coefficient is the
+/// traction σn(p), the dual weight is its Lagrange function ℓ_p) or, where the DOF points'
+/// interpolatory rule cannot keep the weighted gap of a non-negative linear gap non-negative
+/// (3D, 2D k = 3), a Bernstein coefficient B_p of the face (non-negative dual weight B_p).
+struct ContactPoint {
+  int face = -1;                     ///< mesh face
+  int block = -1;                    ///< index of its face block in the solver (internal)
+  int index = -1;                    ///< index within the face block
+  std::array<double, 3> x{};         ///< the DOF point, or the Bernstein control point
+  std::array<double, 3> n{}, t1{}, t2{};
+  double gap = 0.0;      ///< weighted gap G_p = ∫_F g w_p ds (w_p = ℓ_p or B_p)
+  double weight = 0.0;   ///< ∫_F w_p ds (for the resultant force)
+  double c = 0.0;        ///< semismooth Newton constant 2μ/(h_F |F|)
+  // State and results.
+  PointStatus status = PointStatus::Free;
+  std::array<double, 2> direction{};  ///< slip direction ξ in (t1, t2)
+  double sigmaN = 0.0, rN = 0.0;
+  /// σ_N at the face's DOF point with this index (= sigmaN for point constraints): the traction
+  /// trace's value, where a Bernstein coefficient (a control value) can overshoot.
+  double sigmaNAtDofPoint = 0.0;
+  double frictionBound = 0.0;  ///< s_p of the Coulomb fixed point (a Tresca bound per point)
+  std::array<double, 2> sigmaT{}, rT{};
+};
+
+/// The columns of the contact CSV (docs/output.md): x, y[, z], sigma_n, sigma_t[, sigma_t2],
+/// weighted_gap, weighted_slip, status.
+std::vector<std::string> csvColumns(int dim);
+/// A point's numbers in the columns of csvColumns(dim) but the last (status, toString(p.status)):
+/// weighted_gap = G − r_N ≥ 0 (the weighted gap left open; 0 on active points), weighted_slip =
+/// |r_T| (the weighted tangential displacement).
+std::vector<double> csvValues(const ContactPoint& p, int dim);
+
+/// Mean contact pressure −σ_N and mean first tangential traction σ_T·t1 of the points of a face.
+struct FaceTraction {
+  double pressure = 0.0, shear = 0.0;
+};
+/// Per mesh face (those with points among `points`): the means of its points.
+std::map<int, FaceTraction> faceMeans(const std::vector<ContactPoint>& points);
+
+}  // namespace sc::contact
