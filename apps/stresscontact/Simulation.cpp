@@ -167,6 +167,7 @@ void Simulation::setupMesh()
   mesh_ = refiner_->mesh();
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
+  boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
   if (boundaryConditions_.hasContact())
     contact::checkObstacle(*mesh_, contact_,
                            boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));

@@ -48,6 +48,26 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryConditions)
   TEST_THROW(sc::core::BoundaryConditions::fromParameters(bc, 3), sc::core::InputError);
 }
 
+// ν = 0.5: A I = 0 (analytic: c_d = 1/d, so A I = (I − c_d d I)/2μ = 0), so a boundary held by
+// Displacement everywhere leaves the mean pressure free; any traction part fixes it.
+TEUCHOS_UNIT_TEST(ProblemData, IncompressiblePureDisplacementIsAnInputError)
+{
+  ParameterList bc;
+  for (const char* name : {"Top", "Arc"}) {
+    bc.sublist(name).set("Type", std::string("Displacement"));
+    bc.sublist(name).set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 0.0)));
+  }
+  ParameterList valid = *sc::core::BoundaryConditions::getValidParameters();
+  sc::core::validateParameters(bc, valid, "test");
+  auto bcs = sc::core::BoundaryConditions::fromParameters(bc, 2);
+  const sc::core::Material incompressible{1.0, 0.5}, nearly{1.0, 0.4999};
+  TEST_THROW(bcs.checkPressureDetermined({"Top", "Arc"}, incompressible), sc::core::InputError);
+  bcs.checkPressureDetermined({"Top", "Arc"}, nearly);             // well-posed below 0.5
+  bcs.checkPressureDetermined({"Top", "Arc", "Side"}, incompressible);  // "Side": traction free
+  bcs.conditions[1].type = sc::core::BoundaryType::Contact;
+  bcs.checkPressureDetermined({"Top", "Arc"}, incompressible);
+}
+
 TEUCHOS_UNIT_TEST(ProblemData, ContactNormalIsNormalised)
 {
   ParameterList c;

@@ -174,6 +174,26 @@ const BoundaryCondition* BoundaryConditions::find(const std::string& boundary) c
   return nullptr;
 }
 
+void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>& meshBoundaries,
+                                                 const Material& material) const
+{
+  if (material.poissonRatio < 0.5)
+    return;
+  for (const auto& name : meshBoundaries) {
+    const auto it = std::find_if(conditions.begin(), conditions.end(),
+                                 [&](const BoundaryCondition& c) { return c.boundary == name; });
+    if (it == conditions.end() || it->type != BoundaryType::Displacement)
+      return;  // a traction (given, zero or contact) part fixes the mean pressure
+  }
+  SC_THROW_IF(true, InputError,
+              "'Material/Poisson ratio' = 0.5 with a Displacement condition on every boundary part ("
+                  << joined(meshBoundaries) << "): the stress is then determined only up to a "
+                  << "constant pressure (the compliance of an incompressible material vanishes on "
+                  << "the identity) and the discrete problem is singular. Give at least one part "
+                  << "a Traction, Free or Contact condition, or use a Poisson ratio below 0.5 "
+                  << "(e.g. 0.4999).");
+}
+
 void BoundaryConditions::checkBoundaryNames(const std::vector<std::string>& meshBoundaries,
                                             const std::string& meshDescription) const
 {

@@ -76,6 +76,12 @@ struct BoundaryConditions {
   std::vector<std::string> boundariesOfType(BoundaryType type) const;
   const BoundaryCondition* find(const std::string& boundary) const;
   /// Checks every named boundary exists in `meshBoundaries`; the error lists the valid names.
+  /// At ν = 0.5 the compliance annihilates the identity (A I = 0): with a Displacement condition
+  /// on every boundary part no traction fixes the mean pressure, σ_h + c I solves the discrete
+  /// problem for every c and the matrix is singular (a direct solver may still return a
+  /// solution, with an arbitrary pressure). Throws InputError naming the keys in that case.
+  void checkPressureDetermined(const std::vector<std::string>& meshBoundaries,
+                               const Material& material) const;
   void checkBoundaryNames(const std::vector<std::string>& meshBoundaries,
                           const std::string& meshDescription) const;
 
