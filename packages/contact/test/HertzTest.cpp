@@ -11,7 +11,7 @@
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 
-#include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/contact/Obstacle.hpp>
@@ -21,7 +21,6 @@
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
-#include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/DirectSolver.hpp>
@@ -74,14 +73,14 @@ HertzResult solveHertz(const HertzCase& h)
   local.set("Boundary", h.refineBoundary);
   sc::mesh::MeshFactory::refineLocally(*refiner, local);
   auto m = refiner->mesh();
-  auto owner = sc::mesh::partitionElements(*m, *comm);
   Teuchos::RCP<const sc::mesh::CurvedElements> curved;
   if (h.geometryOrder == 2)
     curved = Teuchos::rcp(new sc::mesh::CurvedElements(m, *refiner->geometry()));
-  auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, h.degree, owner, comm->getRank(), curved));
-  sc::assembly::MixedElasticityAssembler assembler(space, comm);
+  // The application's pipeline: METIS partition, spaces, assembly, solver preparation.
+  sc::assembly::MixedElasticitySystem system(m, h.degree, comm, curved);
+  const auto& space = system.space();
   if (comm->getRank() == 0)
-    std::cout << "  [" << m->numElements() << " elements, " << space->numGlobalDofs() << " DOFs]" << std::endl;
+    std::cout << "  [" << m->numElements() << " elements, " << space.numGlobalDofs() << " DOFs]" << std::endl;
   sc::core::BoundaryConditions bcs;
   std::vector<double> uD(d, 0.0);
   uD[d - 1] = -h.displacement;
@@ -89,7 +88,7 @@ HertzResult solveHertz(const HertzCase& h)
   const std::string contactName = !h.contactName.empty() ? h.contactName : (d == 2 ? "Arc" : "Cap");
   bcs.conditions.push_back({contactName, sc::core::BoundaryType::Contact, {}, false});
   sc::core::Material material{h.E, h.nu};
-  assembler.assemble({material, bcs, nullptr});
+  system.assemble({material, bcs, nullptr});
   sc::core::ContactSettings cs;
   cs.obstaclePoint.assign(d, 0.0);
   cs.obstaclePoint[d - 1] = h.obstacleHeight;
@@ -101,12 +100,13 @@ HertzResult solveHertz(const HertzCase& h)
   Teuchos::ParameterList newton;
   if (!h.coulombMethod.empty()) newton.set("Coulomb method", h.coulombMethod);
   sc::contact::checkObstacle(*m, cs, {contactName});
-  sc::contact::ActiveSetSolver contact(*space, cs, material, {contactName}, newton, comm);
+  sc::contact::ActiveSetSolver contact(space, cs, material, {contactName}, newton, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", h.solver);
   auto solver = sc::solvers::createLinearSolver(solverList);
+  const auto& assembler = system.assembler();
   auto x = assembler.createVector();
-  solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+  system.prepareSolver(*solver);
   contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
   HertzResult r;
   r.summary = sc::contact::summarizeContact(contact.points(), d, cs.obstacleNormal, *comm);
@@ -517,12 +517,10 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
     // free).
     auto solveOn = [&](Teuchos::RCP<const sc::mesh::SimplexMesh> m, const std::vector<ContactPoint>* previous,
                        const std::vector<int>* parents, bool solve = true) {
-      auto owner = sc::mesh::partitionElements(*m, *comm);
-      auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
-      sc::assembly::MixedElasticityAssembler assembler(space, comm);
-      assembler.assemble({material, bcs, nullptr});
+      sc::assembly::MixedElasticitySystem system(m, degree, comm);
+      system.assemble({material, bcs, nullptr});
       Teuchos::ParameterList newton;
-      sc::contact::ActiveSetSolver contact(*space, cs, material, {"Arc"}, newton, comm);
+      sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, newton, comm);
       if (previous)
         contact.transferState(*previous, *parents);
       Run r;
@@ -532,7 +530,8 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
       Teuchos::ParameterList solverList;
       solverList.set("Type", std::string("MUMPS"));
       auto solver = sc::solvers::createLinearSolver(solverList);
-      solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+      system.prepareSolver(*solver);
+      const auto& assembler = system.assembler();
       auto x = assembler.createVector();
       contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
       r.solved = contact.points();
