@@ -58,7 +58,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
       core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
   // Contact data is read (and checked against the dimension) only if the scene has contact.
   if (boundaryConditions_.hasContact())
-    contact_ = core::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
+    contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact()) {
     // Curved contact faces: Mesh/Geometry order = 2 on a scene with curved parts (the contact

@@ -21,6 +21,7 @@
 
 #include <sc/adapt/AdaptiveProblem.hpp>
 #include <sc/adapt/AdaptivitySettings.hpp>
+#include <sc/contact/ContactSettings.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
 #include <sc/core/Timers.hpp>
@@ -142,7 +143,7 @@ private:
   core::ProblemSettings problem_;
   core::Material material_;
   core::BoundaryConditions boundaryConditions_;
-  core::ContactSettings contact_;
+  contact::ContactSettings contact_;
   core::DiscretizationSettings discretization_;
   estimator::EstimatorSettings estimatorSettings_;
   adapt::AdaptivitySettings adaptivity_;

@@ -1,5 +1,6 @@
 // Unit tests of the scene data: compliance coefficient c_d, Hertz modulus, boundary conditions
-// against the problem dimension and the mesh's boundary names, contact normal normalisation.
+// against the problem dimension and the mesh's boundary names (the Contact settings are tested
+// in the contact package).
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include "sc/core/Error.hpp"
@@ -46,21 +47,4 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryConditions)
   }
   // 2 components in a 3D problem.
   TEST_THROW(sc::core::BoundaryConditions::fromParameters(bc, 3), sc::core::InputError);
-}
-
-TEUCHOS_UNIT_TEST(ProblemData, ContactNormalIsNormalised)
-{
-  ParameterList c;
-  c.set("Obstacle normal", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 2.0)));
-  c.set("Friction law", std::string("None"));
-  c.set("Friction coefficient", 0.4);
-  sc::core::validateParameters(c, *sc::core::ContactSettings::getValidParameters(), "test");
-  auto s = sc::core::ContactSettings::fromParameters(c, 2);
-  TEST_FLOATING_EQUALITY(s.obstacleNormal[1], 1.0, 1e-15);
-  // Law None: no friction machinery whatever the coefficient.
-  TEST_ASSERT(!s.needsFriction());
-  c.set("Friction law", std::string("Coulomb"));
-  TEST_ASSERT(sc::core::ContactSettings::fromParameters(c, 2).needsFriction());
-  c.set("Friction coefficient", 0.0);
-  TEST_ASSERT(!sc::core::ContactSettings::fromParameters(c, 2).needsFriction());
 }
