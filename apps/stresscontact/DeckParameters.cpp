@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include <sc/adapt/AdaptivitySettings.hpp>
-#include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/ContactSettings.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
 #include <sc/core/ProblemData.hpp>
@@ -39,14 +39,8 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
     add("Material", core::Material::getValidParameters(), "Isotropic linear elastic material.");
     add("Boundary Conditions", core::BoundaryConditions::getValidParameters(),
         "One sublist per boundary part of the mesh.");
-    {
-      // The Contact data (core) plus the semismooth Newton settings of the contact package.
-      Teuchos::ParameterList contactList = *core::ContactSettings::getValidParameters();
-      contactList.set("Newton", *contact::ActiveSetSolver::getValidParameters(),
-                      "Semismooth Newton / active-set solver (DESIGN §3).");
-      pl->set("Contact", contactList,
-              "Rigid obstacle and friction law, for boundary parts of Type Contact (DESIGN §3).");
-    }
+    add("Contact", contact::ContactSettings::getValidParameters(),
+        "Rigid obstacle and friction law, for boundary parts of Type Contact (DESIGN §3).");
     add("Discretization", core::DiscretizationSettings::getValidParameters(),
         "Finite element spaces (DESIGN §2).");
     add("Linear Solver", solvers::LinearSolverFactory::getValidParameters(),

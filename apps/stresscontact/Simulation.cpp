@@ -17,6 +17,7 @@
 
 #include <sc/adapt/AdaptiveLoop.hpp>
 #include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/contact/Hertz.hpp>
@@ -37,7 +38,6 @@
 #include <sc/io/XdmfWriter.hpp>
 #include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
-#include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
@@ -58,7 +58,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
       core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
   // Contact data is read (and checked against the dimension) only if the scene has contact.
   if (boundaryConditions_.hasContact())
-    contact_ = core::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
+    contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact()) {
     // Curved contact faces: Mesh/Geometry order = 2 on a scene with curved parts (the contact
@@ -246,30 +246,28 @@ void Simulation::refine(const adapt::Marking& marking)
 
 void Simulation::solve(int /*cycle*/)
 {
-  partitionMesh();
   if (boundaryConditions_.hasContact())
     solveContact();
   else
     solveElasticity();
 }
 
-void Simulation::partitionMesh()
-{
-  auto t = timers_.scope("partition");
-  elementOwner_ = mesh::partitionElements(*mesh_, *comm_);
-}
-
 void Simulation::setupElasticity()
 {
+  // Mesh/Geometry order = 2: quadratic elements at the curved boundary (null otherwise).
+  Teuchos::RCP<const mesh::CurvedElements> curved;
   {
     auto t = timers_.scope("setup");
-    // Mesh/Geometry order = 2: quadratic elements at the curved boundary (null otherwise).
-    auto curved = mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_);
-    space_ = Teuchos::rcp(new disc::MixedElasticitySpace(mesh_, discretization_.degree,
-                                                         elementOwner_, comm_->getRank(), curved));
-    assembler_ = std::make_unique<assembly::MixedElasticityAssembler>(space_, comm_);
+    curved = mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_);
   }
-  const auto* curved = space_->curvedElements();
+  // The pipeline shared with the tests and benchmarks: METIS partition ("partition" phase), DOF
+  // numbering and the assembler's graph ("setup").
+  system_ = std::make_unique<assembly::MixedElasticitySystem>(mesh_, discretization_.degree, comm_,
+                                                              curved, &timers_);
+  system_->setupAssembler();
+  elementOwner_ = system_->elementOwner();
+  space_ = system_->spacePtr();
+  assembler_ = &system_->assembler();
   progress_.report("setup", std::to_string(space_->numGlobalDofs()) + " DOFs (stress " +
                                 std::to_string(space_->numStressDofs()) + ", displacement " +
                                 std::to_string(space_->numDisplacementDofs()) + ", rotation " +
@@ -277,45 +275,20 @@ void Simulation::setupElasticity()
                                 (curved ? ", " + std::to_string(curved->numCurvedElements()) +
                                               " curved (quadratic) elements"
                                         : std::string()));
-  {
-    auto t = timers_.scope("assemble");
-    assembler_->assemble({material_, boundaryConditions_, exact_.get()});
-  }
+  system_->assemble({material_, boundaryConditions_, exact_.get()});  // "assemble" phase
   progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
-}
-
-void Simulation::prepareSolver()
-{
-  // The solver owns the physical block scaling D (√(2μ) on σ, 1/√(2μ) on u, θ: robust in E) and
-  // gets the field layout and masses its block preconditioner needs (Krylov only).
-  const double twoMu = 2.0 * material_.shearModulus();
-  solver_->setScaling(assembler_->physicalScaling(twoMu)->getVector(0));
-  if (solver_->isIterative()) {
-    solvers::BlockStructure blocks;
-    blocks.dimension = space_->dim();
-    blocks.stressDofs = space_->numStressDofs();
-    blocks.displacementDofs = space_->numDisplacementDofs();
-    blocks.rotationDofs = space_->numRotationDofs();
-    blocks.twoMu = twoMu;
-    blocks.fieldMass = assembler_->fieldMassMatrix();
-    solver_->setBlockStructure(blocks);
-  }
-  linearIterations_.clear();
 }
 
 void Simulation::solveElasticity()
 {
   setupElasticity();
-  {
-    auto t = timers_.scope("solve");
-    prepareSolver();
-    // Without contact rows the system is symmetric (tractions are eliminated symmetrically).
-    solver_->setOperator(assembler_->matrix(), true);
-    solution_ = assembler_->createVector();
-    solver_->solve(*assembler_->rhs(), *solution_);
-    if (solver_->isIterative())
-      linearIterations_.push_back(solver_->lastSolveStats().iterations);
-  }
+  linearIterations_.clear();
+  // The "solve" phase: the solver gets the physical block scaling D (√(2μ) on σ, 1/√(2μ) on u,
+  // θ: robust in E) and, if Krylov, the block structure; the system without contact rows is
+  // symmetric (tractions are eliminated symmetrically).
+  solution_ = system_->solve(*solver_);
+  if (solver_->isIterative())
+    linearIterations_.push_back(solver_->lastSolveStats().iterations);
   std::ostringstream os;
   os << solver_->name() << ", relative residual " << solver_->lastSolveStats().relativeResidual;
   if (solver_->isIterative())
@@ -355,7 +328,8 @@ void Simulation::solveContact()
   solution_ = assembler_->createVector();
   {
     auto t = timers_.scope("solve");
-    prepareSolver();
+    system_->prepareSolver(*solver_);
+    linearIterations_.clear();
     contactSolver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
     linearIterations_ = contactSolver_->statistics().linearIterationsPerStep;
   }

@@ -21,6 +21,7 @@
 
 #include <sc/adapt/AdaptiveProblem.hpp>
 #include <sc/adapt/AdaptivitySettings.hpp>
+#include <sc/contact/ContactSettings.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
 #include <sc/core/Timers.hpp>
@@ -42,7 +43,8 @@ class MixedElasticitySpace;
 }
 namespace sc::assembly {
 class MixedElasticityAssembler;
-}
+class MixedElasticitySystem;
+}  // namespace sc::assembly
 namespace sc::solvers {
 class LinearSolver;
 }
@@ -94,7 +96,7 @@ private:
   /// Bisect the marked elements (or every element, uniformly), then compute the parents of the
   /// new boundary faces for the contact state's transfer and forget the refinement history.
   void refine(const adapt::Marking& marking) override;
-  /// Partition, then set up, assemble and solve (elasticity, or the contact Newton loop).
+  /// Partition, set up, assemble and solve (elasticity, or the contact Newton loop).
   void solve(int cycle) override;
   /// Reconstruction and η (η_CF with contact); the DOFs, η, ‖A^{1/2}σ_h‖ and η_T² for the loop.
   adapt::CycleEstimate estimate(int cycle) override;
@@ -108,10 +110,8 @@ private:
 
   void setupMesh();
   void warnIfLargeDisplacement() const;
-  void partitionMesh();
+  /// The cycle's assembly::MixedElasticitySystem: partition, spaces, assembled matrix.
   void setupElasticity();
-  /// Hand the solver the scaling and (Krylov) the block structure of the assembled system.
-  void prepareSolver();
   void solveElasticity();
   void solveContact();
   /// The reconstruction and estimate of the cycle (estimate_; none if nothing was solved), and
@@ -145,7 +145,7 @@ private:
   core::ProblemSettings problem_;
   core::Material material_;
   core::BoundaryConditions boundaryConditions_;
-  core::ContactSettings contact_;
+  contact::ContactSettings contact_;
   core::DiscretizationSettings discretization_;
   estimator::EstimatorSettings estimatorSettings_;
   adapt::AdaptivitySettings adaptivity_;
@@ -157,16 +157,18 @@ private:
   Teuchos::RCP<mesh::BisectionRefiner> refiner_;  ///< owns the mesh hierarchy
   mesh::ResourceLimit limit_;  ///< Mesh/Memory limit (GB) or the available memory (rank 0's)
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
-  std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element
+  std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element (system_'s)
   std::vector<std::string> phasesMissing_;  ///< phases this build cannot run (none now)
   /// The cycle loop with its marker and stop criteria (built in the constructor so that bad
   /// Adaptivity values fail before any work).
   std::unique_ptr<adapt::AdaptiveLoop> loop_;
 
-  // Mixed elasticity (no contact boundary): spaces, system, solver, solution of the cycle.
+  // Mixed elasticity: the cycle's system (partition, spaces, assembled matrix, built by the
+  // pipeline the tests and benchmarks share), solver and solution.
   std::unique_ptr<core::ExactSolution> exact_;
-  Teuchos::RCP<disc::MixedElasticitySpace> space_;
-  std::unique_ptr<assembly::MixedElasticityAssembler> assembler_;
+  std::unique_ptr<assembly::MixedElasticitySystem> system_;
+  Teuchos::RCP<const disc::MixedElasticitySpace> space_;       ///< system_'s space
+  const assembly::MixedElasticityAssembler* assembler_ = nullptr;  ///< system_'s assembler
   Teuchos::RCP<solvers::LinearSolver> solver_;
   std::vector<int> linearIterations_;  // Krylov iterations per solve of the current cycle
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;

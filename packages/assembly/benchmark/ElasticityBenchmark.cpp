@@ -31,12 +31,11 @@
 #include <Teuchos_Time.hpp>
 #include <Tpetra_MultiVector.hpp>
 
-#include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/MeshFactory.hpp>
-#include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/LinearSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
@@ -132,44 +131,35 @@ int main(int argc, char* argv[])
     auto m = refiner->mesh();
     comm->barrier();
     const double t0 = Teuchos::Time::wallTime();
-    auto owner = sc::mesh::partitionElements(*m, *comm);
-    auto space =
-        Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
-    if (space->numGlobalDofs() > maxDofs)
+    // The application's pipeline (assembly::MixedElasticitySystem), one step at a time so that
+    // each is timed and the graph of a mesh above --max-dofs is never built.
+    sc::assembly::MixedElasticitySystem system(m, degree, comm);  // partition, DOF numbering
+    const auto& space = system.space();
+    if (space.numGlobalDofs() > maxDofs)
       break;
-    if (space->numGlobalDofs() < minDofs) {
+    if (space.numGlobalDofs() < minDofs) {
       refiner->refineUniformly();
       continue;
     }
     const double tSpace = Teuchos::Time::wallTime();
-    sc::assembly::MixedElasticityAssembler assembler(space, comm);
+    system.setupAssembler();
     const double t1 = Teuchos::Time::wallTime();
     comm->barrier();
     const double t1b = Teuchos::Time::wallTime();
-    assembler.assemble({material, bcs, exact.get()});
+    system.assemble({material, bcs, exact.get()});
     const double t2 = Teuchos::Time::wallTime();
     const double setupS = maxOverRanks(*comm, t1 - t0);
     const double numberS = maxOverRanks(*comm, tSpace - t0);
     const double assembleS = maxOverRanks(*comm, t2 - t1b);
-    const long long dofs = space->numGlobalDofs();
+    const long long dofs = space.numGlobalDofs();
     const int elements = m->numElements();
+    const auto& assembler = system.assembler();
     for (const auto& type : solvers) {
       Teuchos::ParameterList sl;
       sl.set("Type", type);
       auto solver = sc::solvers::createLinearSolver(sl);
       auto x = assembler.createVector();
-      const double twoMu = 2.0 * material.shearModulus();
-      solver->setScaling(assembler.physicalScaling(twoMu)->getVector(0));
-      if (solver->isIterative()) {
-        sc::solvers::BlockStructure blocks;
-        blocks.dimension = space->dim();
-        blocks.stressDofs = space->numStressDofs();
-        blocks.displacementDofs = space->numDisplacementDofs();
-        blocks.rotationDofs = space->numRotationDofs();
-        blocks.twoMu = twoMu;
-        blocks.fieldMass = assembler.fieldMassMatrix();
-        solver->setBlockStructure(blocks);
-      }
+      system.prepareSolver(*solver);  // scaling and (Krylov) block structure, as the application
       comm->barrier();
       const double tOp = Teuchos::Time::wallTime();
       solver->setOperator(assembler.matrix(), true);

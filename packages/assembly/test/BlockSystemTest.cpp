@@ -19,6 +19,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 
 #include <sc/assembly/BlockSystem.hpp>
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/core/Error.hpp>
 
 #include "ElasticityTestProblem.hpp"
@@ -35,13 +36,15 @@ const std::pair<int, int> nonzeroBlocks[] = {{0, 0}, {0, 1}, {0, 2}, {1, 0}, {2,
 const std::pair<int, int> couplingBlocks[] = {{0, 1}, {0, 2}, {1, 0}, {2, 0}};
 
 struct AssembledProblem {
-  Teuchos::RCP<const sc::disc::MixedElasticitySpace> space;
-  std::unique_ptr<MixedElasticityAssembler> assembler;
+  std::unique_ptr<sc::assembly::MixedElasticitySystem> system;
   sc::core::Material material;
+  const sc::disc::MixedElasticitySpace& space() const { return system->space(); }
+  const MixedElasticityAssembler& assembler() const { return system->assembler(); }
 };
 
 /// The manufactured problem of ElasticityTestProblem.hpp (displacement on Left/Bottom(/Front),
-/// traction on the other sides), assembled once. E = 1000 so that 2μ ≠ 1 in the scaled checks.
+/// traction on the other sides), assembled once by the application's pipeline. E = 1000 so that
+/// 2μ ≠ 1 in the scaled checks.
 AssembledProblem assemble(const std::string& source, int dim, double meshSize, int degree)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
@@ -50,13 +53,11 @@ AssembledProblem assemble(const std::string& source, int dim, double meshSize, i
   meshList.set("Initial mesh size", meshSize);
   meshList.set("Uniform refinements", 0);
   auto m = sc::mesh::MeshFactory::build(meshList, dim)->mesh();
-  auto owner = sc::mesh::partitionElements(*m, *comm);
   AssembledProblem p;
   p.material = sc::core::Material{1000.0, 0.3};
-  p.space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
-  p.assembler = std::make_unique<MixedElasticityAssembler>(p.space, comm);
+  p.system = std::make_unique<sc::assembly::MixedElasticitySystem>(m, degree, comm);
   auto exact = sc::core::createExactSolution("Manufactured smooth", dim, p.material);
-  p.assembler->assemble({p.material, sc::test::verificationBoundaryConditions(dim), exact.get()});
+  p.system->assemble({p.material, sc::test::verificationBoundaryConditions(dim), exact.get()});
   return p;
 }
 
@@ -90,12 +91,12 @@ double difference(const CrsMatrix& A, bool transposeA, const CrsMatrix& B)
 
 void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, bool& success)
 {
-  const auto& S = *p.space;
-  const auto& M = *p.assembler->matrix();
+  const auto& S = p.space();
+  const auto& M = *p.assembler().matrix();
   auto comm = M.getRowMap()->getComm();
   const double twoMu = 2.0 * p.material.shearModulus();
-  BlockSystem plain(*p.assembler);
-  BlockSystem scaled(*p.assembler, twoMu);
+  BlockSystem plain(p.assembler());
+  BlockSystem scaled(p.assembler(), twoMu);
   out << S.dim() << "D k=" << S.degree() << ": " << S.numGlobalDofs() << " DOFs ("
       << S.numStressDofs() << " σ, " << S.numDisplacementDofs() << " u, " << S.numRotationDofs()
       << " θ), " << M.getGlobalNumEntries() << " entries in M\n";
@@ -208,7 +209,7 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
   back.normInf(norms());
   for (double v : norms)
     TEST_EQUALITY(v, 0.0);
-  const auto D = p.assembler->physicalScaling(twoMu)->getVector(0);
+  const auto D = p.assembler().physicalScaling(twoMu)->getVector(0);
   for (const BlockSystem* bs : {&plain, &scaled}) {
     const bool isScaled = bs == &scaled;
     MultiVector xs(x, Teuchos::Copy);
@@ -253,9 +254,9 @@ TEUCHOS_UNIT_TEST(BlockSystem, MatchesMonolithic3D)
 TEUCHOS_UNIT_TEST(BlockSystem, RefusesNonZeroZeroBlock)
 {
   auto p = assemble("Unit square", 2, 0.3, 1);
-  const auto& S = *p.space;
+  const auto& S = p.space();
   const sc::assembly::FieldLayout layout{S.numStressDofs(), S.numDisplacementDofs(), S.numRotationDofs()};
-  auto M = Teuchos::rcp(new CrsMatrix(*p.assembler->matrix(), Teuchos::Copy));
+  auto M = Teuchos::rcp(new CrsMatrix(*p.assembler().matrix(), Teuchos::Copy));
   TEST_NOTHROW(BlockSystem accepted(M, layout));
   M->resumeFill();
   bool changed = false;

@@ -12,6 +12,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/assembly/Multigrid.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/core/Parameters.hpp>
@@ -105,11 +106,10 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   auto solver = solvers::createLinearSolver(solverList);
   std::vector<LevelResult> results;
   std::vector<solvers::MultigridLevel> hierarchy;
-  Teuchos::RCP<disc::MixedElasticitySpace> previous;
+  Teuchos::RCP<const disc::MixedElasticitySpace> previous;
   if (s.multigrid) {
-    auto m0 = refiner->mesh();
-    previous = Teuchos::rcp(new disc::MixedElasticitySpace(m0, s.degree, mesh::partitionElements(*m0, *comm),
-                                                           comm->getRank()));
+    // The coarsest level: its partition and spaces (nothing is assembled there).
+    previous = assembly::MixedElasticitySystem(refiner->mesh(), s.degree, comm).spacePtr();
     hierarchy.push_back({});
   }
   for (int level = 0; level < s.levels; ++level) {
@@ -123,46 +123,34 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
       refiner->refineUniformly();
     }
     auto m = refiner->mesh();
-    auto owner = s.allOnRankZero ? std::vector<int>(m->numElements(), 0)
-                                 : mesh::partitionElements(*m, *comm);
     Teuchos::RCP<const mesh::CurvedElements> curved;
     if (s.geometryOrder == 2)
       curved = Teuchos::rcp(new mesh::CurvedElements(m, *refiner->geometry()));
-    auto space = Teuchos::rcp(new disc::MixedElasticitySpace(m, s.degree, owner, comm->getRank(), curved));
+    // The application's pipeline: partition, spaces, assembly, and the solve with the solver
+    // prepared as the application prepares it (physical scaling; block structure for Krylov).
+    auto system = s.allOnRankZero
+                      ? std::make_unique<assembly::MixedElasticitySystem>(
+                            m, s.degree, std::vector<int>(m->numElements(), 0), comm, curved)
+                      : std::make_unique<assembly::MixedElasticitySystem>(m, s.degree, comm, curved);
+    const auto& space = system->space();
     if (s.multigrid) {
-      hierarchy.push_back({assembly::stressProlongation(*previous, *space, step->elementParent, comm),
-                           assembly::stressVertexPatches(*space)});
-      previous = space;
+      hierarchy.push_back({assembly::stressProlongation(*previous, space, step->elementParent, comm),
+                           assembly::stressVertexPatches(space)});
+      previous = system->spacePtr();
     }
-    assembly::MixedElasticityAssembler assembler(space, comm);
     assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};
     if (!s.boundaryConditions.empty())
       data.boundaryConditions.conditions = s.boundaryConditions;
-    assembler.assemble(data);
-    auto x = assembler.createVector();
-    // As the application does (Simulation::prepareSolver): physical scaling, and the block
-    // structure for Krylov solvers.
-    solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
-    if (solver->isIterative()) {
-      solvers::BlockStructure blocks;
-      blocks.dimension = space->dim();
-      blocks.stressDofs = space->numStressDofs();
-      blocks.displacementDofs = space->numDisplacementDofs();
-      blocks.rotationDofs = space->numRotationDofs();
-      blocks.twoMu = 2.0 * material.shearModulus();
-      blocks.fieldMass = assembler.fieldMassMatrix();
-      blocks.multigrid = hierarchy;
-      solver->setBlockStructure(blocks);
-    }
-    solver->setOperator(assembler.matrix(), true);
-    solver->solve(*assembler.rhs(), *x);
+    system->assemble(data);
+    const auto& assembler = system->assembler();
+    auto x = system->solve(*solver, hierarchy);
     LevelResult r;
     r.iterations = solver->lastSolveStats().iterations;
     r.relativeResidual = solver->lastSolveStats().relativeResidual;
     // Effective mesh size (|Ω|/#elements)^{1/d}: uniform bisection shrinks it by exactly 2 per
     // level, unlike the largest diameter (3D bisection leaves long edges for a while).
     r.h = std::pow(m->measure() / m->numElements(), 1.0 / s.dim);
-    r.dofs = space->numGlobalDofs();
+    r.dofs = space.numGlobalDofs();
     if (exact)
       r.errors = assembly::computeErrors(assembler, *x, *exact, *comm);
     if (onLevel)

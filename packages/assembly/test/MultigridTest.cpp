@@ -31,24 +31,22 @@ TEUCHOS_UNIT_TEST(Multigrid, ProlongationIsExact)
       sc::core::Material material{1.0, 0.3};
       auto exact = sc::core::createExactSolution("Manufactured smooth", dim, material, M_PI);
       auto coarseMesh = refiner->mesh();
-      auto coarseSpace = Teuchos::rcp(new sc::disc::MixedElasticitySpace(
-          coarseMesh, k, sc::mesh::partitionElements(*coarseMesh, *comm), comm->getRank()));
-      sc::assembly::MixedElasticityAssembler ca(coarseSpace, comm);
+      sc::assembly::MixedElasticitySystem coarse(coarseMesh, k, comm);
+      auto coarseSpace = coarse.spacePtr();
       sc::assembly::ElasticityData data{material, sc::test::verificationBoundaryConditions(dim),
                                         exact.get()};
-      ca.assemble(data);
+      coarse.assemble(data);
       Teuchos::ParameterList sl;
       sl.set("Type", std::string("MUMPS"));
       auto solver = sc::solvers::createLinearSolver(sl);
-      auto xc = ca.createVector();
-      solver->setOperator(ca.matrix(), true);
-      solver->solve(*ca.rhs(), *xc);
+      auto xc = coarse.solve(*solver);
 
       const auto& step = refiner->refineUniformly();
       auto fineMesh = refiner->mesh();
-      auto fineSpace = Teuchos::rcp(new sc::disc::MixedElasticitySpace(
-          fineMesh, k, sc::mesh::partitionElements(*fineMesh, *comm), comm->getRank()));
-      sc::assembly::MixedElasticityAssembler fa(fineSpace, comm);
+      sc::assembly::MixedElasticitySystem fine(fineMesh, k, comm);
+      fine.setupAssembler();
+      auto fineSpace = fine.spacePtr();
+      const auto& fa = fine.assembler();
       auto P = sc::assembly::stressProlongation(*coarseSpace, *fineSpace, step.elementParent, comm);
       // σ part of xc on P's domain map, P σ_c into a fine monolithic vector (u, θ = 0)
       Tpetra::MultiVector<> sc(P->getDomainMap(), 1), sf(P->getRangeMap(), 1);
@@ -130,7 +128,8 @@ TEUCHOS_UNIT_TEST(Multigrid, PatchesCoverTheStressDofs)
   meshList.set("Initial mesh size", 0.25);
   auto refiner = sc::mesh::MeshFactory::build(meshList, 2);
   auto m = refiner->mesh();
-  sc::disc::MixedElasticitySpace space(m, 1, sc::mesh::partitionElements(*m, *comm), comm->getRank());
+  sc::assembly::MixedElasticitySystem system(m, 1, comm);
+  const auto& space = system.space();
   const auto patches = sc::assembly::stressVertexPatches(space);
   std::set<long long> covered;
   std::size_t largest = 0;

@@ -11,7 +11,7 @@
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 
-#include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/contact/Obstacle.hpp>
@@ -21,7 +21,6 @@
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
-#include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/DirectSolver.hpp>
@@ -36,7 +35,7 @@ struct HertzCase {
   std::string contactName;  ///< default: Arc / Cap
   double refineCenterY = 0.0;
   double E = 20600.0, nu = 0.28, displacement = 0.01;
-  sc::core::FrictionLaw law = sc::core::FrictionLaw::None;
+  sc::contact::FrictionLaw law = sc::contact::FrictionLaw::None;
   double mu = 0.0;
   double meshSize = 0.1;
   int localRefinements = 6;  ///< bisection sweeps of the elements near the contact zone
@@ -45,7 +44,7 @@ struct HertzCase {
   std::string solver = "MUMPS";
   std::string coulombMethod;  ///< Contact/Newton/Coulomb method (empty: the default)
   int degree = 1;             ///< Discretization/Degree k
-  sc::core::ContactFrame frame = sc::core::ContactFrame::ObstacleNormal;
+  sc::contact::ContactFrame frame = sc::contact::ContactFrame::ObstacleNormal;
   double obstacleHeight = 0.0;  ///< the plane y = h (2D) / z = h (3D); h > 0: initial overlap
   int geometryOrder = 1;        ///< Mesh/Geometry order: 2 = curved (quadratic) boundary elements
 };
@@ -74,14 +73,14 @@ HertzResult solveHertz(const HertzCase& h)
   local.set("Boundary", h.refineBoundary);
   sc::mesh::MeshFactory::refineLocally(*refiner, local);
   auto m = refiner->mesh();
-  auto owner = sc::mesh::partitionElements(*m, *comm);
   Teuchos::RCP<const sc::mesh::CurvedElements> curved;
   if (h.geometryOrder == 2)
     curved = Teuchos::rcp(new sc::mesh::CurvedElements(m, *refiner->geometry()));
-  auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, h.degree, owner, comm->getRank(), curved));
-  sc::assembly::MixedElasticityAssembler assembler(space, comm);
+  // The application's pipeline: METIS partition, spaces, assembly, solver preparation.
+  sc::assembly::MixedElasticitySystem system(m, h.degree, comm, curved);
+  const auto& space = system.space();
   if (comm->getRank() == 0)
-    std::cout << "  [" << m->numElements() << " elements, " << space->numGlobalDofs() << " DOFs]" << std::endl;
+    std::cout << "  [" << m->numElements() << " elements, " << space.numGlobalDofs() << " DOFs]" << std::endl;
   sc::core::BoundaryConditions bcs;
   std::vector<double> uD(d, 0.0);
   uD[d - 1] = -h.displacement;
@@ -89,8 +88,8 @@ HertzResult solveHertz(const HertzCase& h)
   const std::string contactName = !h.contactName.empty() ? h.contactName : (d == 2 ? "Arc" : "Cap");
   bcs.conditions.push_back({contactName, sc::core::BoundaryType::Contact, {}, false});
   sc::core::Material material{h.E, h.nu};
-  assembler.assemble({material, bcs, nullptr});
-  sc::core::ContactSettings cs;
+  system.assemble({material, bcs, nullptr});
+  sc::contact::ContactSettings cs;
   cs.obstaclePoint.assign(d, 0.0);
   cs.obstaclePoint[d - 1] = h.obstacleHeight;
   cs.frame = h.frame;
@@ -101,12 +100,13 @@ HertzResult solveHertz(const HertzCase& h)
   Teuchos::ParameterList newton;
   if (!h.coulombMethod.empty()) newton.set("Coulomb method", h.coulombMethod);
   sc::contact::checkObstacle(*m, cs, {contactName});
-  sc::contact::ActiveSetSolver contact(*space, cs, material, {contactName}, newton, comm);
+  sc::contact::ActiveSetSolver contact(space, cs, material, {contactName}, newton, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", h.solver);
   auto solver = sc::solvers::createLinearSolver(solverList);
+  const auto& assembler = system.assembler();
   auto x = assembler.createVector();
-  solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+  system.prepareSolver(*solver);
   contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
   HertzResult r;
   r.summary = sc::contact::summarizeContact(contact.points(), d, cs.obstacleNormal, *comm);
@@ -188,7 +188,7 @@ FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::Fancy
   }
 
   out << "k = " << h.degree << ", "
-      << (h.frame == sc::core::ContactFrame::BodyNormal ? "body" : "obstacle") << " frame, nu = "
+      << (h.frame == sc::contact::ContactFrame::BodyNormal ? "body" : "obstacle") << " frame, nu = "
       << std::setprecision(6) << nu << std::setprecision(4) << ": P = " << f.P << ", a = " << r.summary.zoneSize << " (Hertz " << f.a
       << "), p0 = " << r.summary.maxPressure << " (Hertz " << f.p0 << "), Newton steps "
       << r.stats.newtonIterations << ", centre " << r.summary.center[0] << ", profile error "
@@ -221,7 +221,7 @@ void coulomb2D(int degree, Teuchos::FancyOStream& out, bool& success, int geomet
   HertzCase h;
   h.degree = degree;
   h.geometryOrder = geometryOrder;
-  h.law = sc::core::FrictionLaw::Coulomb;
+  h.law = sc::contact::FrictionLaw::Coulomb;
   h.mu = 0.4;
   const auto r = solveHertz(h);
   out << "k = " << degree << ": force " << r.summary.force[1] << ", ";
@@ -257,7 +257,7 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless2D)
 TEUCHOS_UNIT_TEST(Hertz, Frictionless2DBodyFrame)
 {
   HertzCase h = frictionlessCase(0.28);
-  h.frame = sc::core::ContactFrame::BodyNormal;
+  h.frame = sc::contact::ContactFrame::BodyNormal;
   frictionless2D(h, 0.03, out, success);
 }
 
@@ -304,7 +304,7 @@ TEUCHOS_UNIT_TEST(Hertz, CurvedBodyFrameIsAnInputError)
   HertzCase h = frictionlessCase(0.28);
   h.localRefinements = 0;
   h.geometryOrder = 2;
-  h.frame = sc::core::ContactFrame::BodyNormal;
+  h.frame = sc::contact::ContactFrame::BodyNormal;
   std::string message;
   try {
     solveHertz(h);
@@ -348,7 +348,7 @@ TEUCHOS_UNIT_TEST(Hertz, ZeroFrictionEqualsFrictionless)
   // μ_F = 0 with the Coulomb law builds no friction rows: the same system, the same solution.
   HertzCase a = coarseHertz();
   HertzCase b = coarseHertz();
-  b.law = sc::core::FrictionLaw::Coulomb;
+  b.law = sc::contact::FrictionLaw::Coulomb;
   b.mu = 0.0;
   const auto ra = solveHertz(a), rb = solveHertz(b);
   TEST_COMPARE(relativeDifference(rb.x, ra.x, 1.0), <=, 1e-12);
@@ -360,7 +360,7 @@ TEUCHOS_UNIT_TEST(Hertz, ZeroFrictionEqualsFrictionless)
 TEUCHOS_UNIT_TEST(Hertz, CoulombFixedPointMatchesNewton)
 {
   HertzCase a = coarseHertz();
-  a.law = sc::core::FrictionLaw::Coulomb;
+  a.law = sc::contact::FrictionLaw::Coulomb;
   a.mu = 0.4;
   a.coulombMethod = "Newton";
   HertzCase b = a;
@@ -387,7 +387,7 @@ TEUCHOS_UNIT_TEST(Hertz, CoulombFixedPointMatchesNewton)
 TEUCHOS_UNIT_TEST(Hertz, LargeFrictionSticks)
 {
   HertzCase h = coarseHertz();
-  h.law = sc::core::FrictionLaw::Coulomb;
+  h.law = sc::contact::FrictionLaw::Coulomb;
   h.mu = 10.0;
   const auto r = solveHertz(h);
   out << "mu = 10: stick " << r.summary.numStick << ", slip " << r.summary.numSlip << "\n";
@@ -401,7 +401,7 @@ TEUCHOS_UNIT_TEST(Hertz, YoungModulusScalesStressOnly)
 {
   // Displacement-driven: E × 10⁶ multiplies σ by 10⁶ and leaves u, θ and the contact set alone.
   HertzCase a = coarseHertz(), b = coarseHertz();
-  a.law = b.law = sc::core::FrictionLaw::Coulomb;
+  a.law = b.law = sc::contact::FrictionLaw::Coulomb;
   a.mu = b.mu = 0.4;
   b.E = a.E * 1e6;
   const auto ra = solveHertz(a), rb = solveHertz(b);
@@ -420,7 +420,7 @@ HertzCase flatPunch()
   h.contactName = "Bottom";
   h.meshSize = 0.125;
   h.localRefinements = 0;
-  h.law = sc::core::FrictionLaw::Coulomb;
+  h.law = sc::contact::FrictionLaw::Coulomb;
   h.mu = 0.4;
   h.displacement = 0.01;
   return h;
@@ -504,10 +504,10 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
     sc::core::BoundaryConditions bcs;
     bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, {0.0, -0.01}, false});
     bcs.conditions.push_back({"Arc", sc::core::BoundaryType::Contact, {}, false});
-    sc::core::ContactSettings cs;
+    sc::contact::ContactSettings cs;
     cs.obstaclePoint = {0.0, 0.0};
     cs.obstacleNormal = {0.0, 1.0};
-    cs.frictionLaw = sc::core::FrictionLaw::Coulomb;
+    cs.frictionLaw = sc::contact::FrictionLaw::Coulomb;
     cs.frictionCoefficient = 0.4;
     struct Run {
       std::vector<ContactPoint> initial, solved;
@@ -517,12 +517,10 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
     // free).
     auto solveOn = [&](Teuchos::RCP<const sc::mesh::SimplexMesh> m, const std::vector<ContactPoint>* previous,
                        const std::vector<int>* parents, bool solve = true) {
-      auto owner = sc::mesh::partitionElements(*m, *comm);
-      auto space = Teuchos::rcp(new sc::disc::MixedElasticitySpace(m, degree, owner, comm->getRank()));
-      sc::assembly::MixedElasticityAssembler assembler(space, comm);
-      assembler.assemble({material, bcs, nullptr});
+      sc::assembly::MixedElasticitySystem system(m, degree, comm);
+      system.assemble({material, bcs, nullptr});
       Teuchos::ParameterList newton;
-      sc::contact::ActiveSetSolver contact(*space, cs, material, {"Arc"}, newton, comm);
+      sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, newton, comm);
       if (previous)
         contact.transferState(*previous, *parents);
       Run r;
@@ -532,7 +530,8 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
       Teuchos::ParameterList solverList;
       solverList.set("Type", std::string("MUMPS"));
       auto solver = sc::solvers::createLinearSolver(solverList);
-      solver->setScaling(assembler.physicalScaling(2.0 * material.shearModulus())->getVector(0));
+      system.prepareSolver(*solver);
+      const auto& assembler = system.assembler();
       auto x = assembler.createVector();
       contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
       r.solved = contact.points();
@@ -627,12 +626,12 @@ TEUCHOS_UNIT_TEST(Contact, SupportedDegrees)
   // the reason for the Gauss-Lobatto points. k = 1 keeps 1/3, 2/3 with weights 1/2, 1/2.
   TEST_FLOATING_EQUALITY(sc::disc::minRelativeFaceDofWeight(2, 1), 0.5, 1e-10);
   // Curved contact faces: verified at k = 1, 2 (2D) and k = 1 (3D), rejected above.
-  const auto obstacle = sc::core::ContactFrame::ObstacleNormal;
+  const auto obstacle = sc::contact::ContactFrame::ObstacleNormal;
   TEST_NOTHROW(sc::contact::checkCurvedContact(2, 2, obstacle));
   TEST_NOTHROW(sc::contact::checkCurvedContact(3, 1, obstacle));
   TEST_THROW(sc::contact::checkCurvedContact(2, 3, obstacle), sc::core::InputError);
   TEST_THROW(sc::contact::checkCurvedContact(3, 2, obstacle), sc::core::InputError);
-  TEST_THROW(sc::contact::checkCurvedContact(2, 1, sc::core::ContactFrame::BodyNormal), sc::core::InputError);
+  TEST_THROW(sc::contact::checkCurvedContact(2, 1, sc::contact::ContactFrame::BodyNormal), sc::core::InputError);
   TEST_COMPARE(sc::disc::minRelativeFaceDofWeight(3, 3), <, 0.0);
 }
 
@@ -645,7 +644,7 @@ TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
   meshList.set("Source", std::string("Half disc"));
   meshList.set("Initial mesh size", 0.2);
   auto m = sc::mesh::MeshFactory::build(meshList, 2, *comm)->mesh();
-  sc::core::ContactSettings cs;
+  sc::contact::ContactSettings cs;
   cs.obstaclePoint = {0.0, 0.0};
   cs.obstacleNormal = {0.0, 1.0};
   sc::contact::checkObstacle(*m, cs, {"Arc"});  // the Hertz scene: fine
@@ -837,7 +836,7 @@ void coulomb3D(const HertzCase& h, Teuchos::FancyOStream& out, bool& success)
 TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
 {
   HertzCase h = hertz3DScene();
-  h.law = sc::core::FrictionLaw::Coulomb;
+  h.law = sc::contact::FrictionLaw::Coulomb;
   h.mu = 0.4;
   h.geometryOrder = 2;
   coulomb3D(h, out, success);
@@ -850,7 +849,7 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
 TEUCHOS_UNIT_TEST(Hertz, Degree2Coulomb3D)
 {
   HertzCase h = hertz3DScene();
-  h.law = sc::core::FrictionLaw::Coulomb;
+  h.law = sc::contact::FrictionLaw::Coulomb;
   h.mu = 0.4;
   h.degree = 2;
   h.meshSize = 0.4;

@@ -1,5 +1,6 @@
 // Unit tests of the scene data: compliance coefficient c_d, Hertz modulus, boundary conditions
-// against the problem dimension and the mesh's boundary names, contact normal normalisation.
+// against the problem dimension and the mesh's boundary names (the Contact settings are tested
+// in the contact package).
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include "sc/core/Error.hpp"
@@ -66,21 +67,4 @@ TEUCHOS_UNIT_TEST(ProblemData, IncompressiblePureDisplacementIsAnInputError)
   bcs.checkPressureDetermined({"Top", "Arc", "Side"}, incompressible);  // "Side": traction free
   bcs.conditions[1].type = sc::core::BoundaryType::Contact;
   bcs.checkPressureDetermined({"Top", "Arc"}, incompressible);
-}
-
-TEUCHOS_UNIT_TEST(ProblemData, ContactNormalIsNormalised)
-{
-  ParameterList c;
-  c.set("Obstacle normal", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 2.0)));
-  c.set("Friction law", std::string("None"));
-  c.set("Friction coefficient", 0.4);
-  sc::core::validateParameters(c, *sc::core::ContactSettings::getValidParameters(), "test");
-  auto s = sc::core::ContactSettings::fromParameters(c, 2);
-  TEST_FLOATING_EQUALITY(s.obstacleNormal[1], 1.0, 1e-15);
-  // Law None: no friction machinery whatever the coefficient.
-  TEST_ASSERT(!s.needsFriction());
-  c.set("Friction law", std::string("Coulomb"));
-  TEST_ASSERT(sc::core::ContactSettings::fromParameters(c, 2).needsFriction());
-  c.set("Friction coefficient", 0.0);
-  TEST_ASSERT(!sc::core::ContactSettings::fromParameters(c, 2).needsFriction());
 }

@@ -160,7 +160,7 @@ void checkContactDegree(int dim, int degree)
                   "(docs/contact.md, 'Degree').");
 }
 
-void checkCurvedContact(int dim, int degree, core::ContactFrame frame)
+void checkCurvedContact(int dim, int degree, ContactFrame frame)
 {
   // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
   SC_THROW_IF((dim == 2 && degree > 2) || (dim == 3 && degree > 1), core::InputError,
@@ -169,7 +169,7 @@ void checkCurvedContact(int dim, int degree, core::ContactFrame frame)
                   "cover k = " << (dim == 2 ? "1, 2" : "1") << " there). Set 'Mesh/Geometry "
                   "order' = 1 (straight faces, verified for this degree) or a degree of "
                   << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
-  SC_THROW_IF(frame == core::ContactFrame::BodyNormal, core::InputError,
+  SC_THROW_IF(frame == ContactFrame::BodyNormal, core::InputError,
               "'Contact/Frame' = 'Body normal' is not available on curved contact faces "
               "('Mesh/Geometry order' = 2): the body normal varies along a curved face, and the "
               "constraints (Bernstein coefficients of the face's traction) need one frame per "
@@ -178,7 +178,7 @@ void checkCurvedContact(int dim, int degree, core::ContactFrame frame)
 }
 
 ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
-                                 const core::ContactSettings& settings,
+                                 const ContactSettings& settings,
                                  const core::Material& material,
                                  const std::vector<std::string>& contactBoundaries,
                                  const Teuchos::ParameterList& newtonList,
@@ -204,7 +204,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   std::vector<int> contactIds;
   for (const auto& name : contactBoundaries)
     contactIds.push_back(m.boundaryId(name));
-  const bool obstacleFrame = settings.frame == core::ContactFrame::ObstacleNormal;
+  const bool obstacleFrame = settings.frame == ContactFrame::ObstacleNormal;
   bernstein_ = useBernsteinConstraints(d, space.degree(), space.geometryOrder() == 2);
   // Curved contact faces: the degrees and the frame verified there (the mesh is replicated, so
   // every rank sees all contact faces and decides alike; a rank-local throw would leave the other
@@ -473,7 +473,7 @@ int ActiveSetSolver::updateState(bool flipToStick)
   const bool friction = settings_.needsFriction();
   // In the Coulomb fixed point each inner problem is Tresca with the bounds μ|σ_N| of the last
   // outer iterate (p.frictionBound).
-  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca || fixedPoint_;
+  const bool tresca = settings_.frictionLaw == FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
   int changes = 0;
   for (auto& p : points_) {
@@ -526,7 +526,7 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
 {
   const int d = space_.dim();
   const bool friction = settings_.needsFriction();
-  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca || fixedPoint_;
+  const bool tresca = settings_.frictionLaw == FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
   Teuchos::RCP<CrsMatrix> A;
   if (!reuse.is_null() && reuse->getCrsGraph().get() == K.getCrsGraph().get()) {
@@ -686,7 +686,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
                             solvers::LinearSolver& solver, MultiVector& x)
 {
   fixedPoint_ = false;
-  const bool coulomb = settings_.needsFriction() && settings_.frictionLaw == core::FrictionLaw::Coulomb;
+  const bool coulomb = settings_.needsFriction() && settings_.frictionLaw == FrictionLaw::Coulomb;
   if (!coulomb || coulombMethod_ == "Newton") {
     solveActiveSet(K, b, solver, x);
     return;

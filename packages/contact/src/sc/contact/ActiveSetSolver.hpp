@@ -30,6 +30,7 @@
 #include <Tpetra_CrsMatrix_fwd.hpp>
 #include <Tpetra_MultiVector_fwd.hpp>
 
+#include <sc/contact/ContactSettings.hpp>
 #include <sc/core/ProblemData.hpp>
 
 #include "sc/contact/ContactPoint.hpp"
@@ -62,7 +63,7 @@ void checkContactDegree(int dim, int degree);
 /// Contact on curved faces (Mesh/Geometry order = 2) is verified at k = 1, 2 in 2D and k = 1 in
 /// 3D, in the obstacle frame; anything else is an InputError naming the keys. Called by the
 /// ActiveSetSolver when its contact faces are curved, and up front by the application.
-void checkCurvedContact(int dim, int degree, core::ContactFrame frame);
+void checkCurvedContact(int dim, int degree, ContactFrame frame);
 
 /// Whether the contact constraints of this dimension and degree act on the Bernstein
 /// coefficients of each face's traction (non-negative dual weights) instead of the DOF points:
@@ -80,7 +81,7 @@ public:
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
 
   /// Points on the faces of `contactBoundaries` owned by this rank.
-  ActiveSetSolver(const disc::MixedElasticitySpace& space, const core::ContactSettings& settings,
+  ActiveSetSolver(const disc::MixedElasticitySpace& space, const ContactSettings& settings,
                   const core::Material& material, const std::vector<std::string>& contactBoundaries,
                   const Teuchos::ParameterList& newtonList, Teuchos::RCP<const Teuchos::Comm<int>> comm);
   ~ActiveSetSolver();
@@ -141,7 +142,7 @@ private:
   };
 
   const disc::MixedElasticitySpace& space_;
-  core::ContactSettings settings_;
+  ContactSettings settings_;
   bool bernstein_ = false;  ///< constraints on Bernstein coefficients (else on DOF points)
   std::vector<ContactFace> faces_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

@@ -46,7 +46,7 @@ std::array<double, 3> PlaneObstacle::contactNormal(const double* /*x*/) const
   return {-normal_[0], -normal_[1], -normal_[2]};
 }
 
-std::unique_ptr<Obstacle> createObstacle(const core::ContactSettings& settings, int dim)
+std::unique_ptr<Obstacle> createObstacle(const ContactSettings& settings, int dim)
 {
   SC_THROW_IF(settings.obstacle != "Plane", core::InputError,
               "'Contact/Obstacle' = '" << settings.obstacle << "': valid obstacles: 'Plane'.");
@@ -68,7 +68,7 @@ double missCap(const mesh::SimplexMesh& m)
   return 10.0 * std::sqrt(diag);
 }
 
-void checkObstacle(const mesh::SimplexMesh& m, const core::ContactSettings& settings,
+void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
                    const std::vector<std::string>& contactBoundaries)
 {
   const int d = m.dim();

@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include <sc/core/ProblemData.hpp>
+#include <sc/contact/ContactSettings.hpp>
 
 namespace sc::mesh {
 class SimplexMesh;
@@ -44,7 +44,7 @@ private:
   std::array<double, 3> point_{}, normal_{};
 };
 
-std::unique_ptr<Obstacle> createObstacle(const core::ContactSettings& settings, int dim);
+std::unique_ptr<Obstacle> createObstacle(const ContactSettings& settings, int dim);
 
 /// The gap given to rays that miss the obstacle: 10 × the mesh's bounding-box diagonal (finite,
 /// since c·G is formed; large enough that such points stay free).
@@ -59,7 +59,7 @@ inline constexpr double kMaxInitialOverlap = 0.1;
 /// points away from the body: the solver would "converge" with nothing in contact), and naming
 /// 'Contact/Obstacle point' if the contact boundary overlaps the obstacle by more than
 /// kMaxInitialOverlap of the body's extent. `contactBoundaries`: boundary names of Type Contact.
-void checkObstacle(const mesh::SimplexMesh& mesh, const core::ContactSettings& settings,
+void checkObstacle(const mesh::SimplexMesh& mesh, const ContactSettings& settings,
                    const std::vector<std::string>& contactBoundaries);
 
 }  // namespace sc::contact

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <cmath>
 #include <sstream>
 
 #include "sc/core/Error.hpp"
@@ -206,67 +205,6 @@ void BoundaryConditions::checkBoundaryNames(const std::vector<std::string>& mesh
                                         << "'. Its boundary parts are: " << joined(meshBoundaries)
                                         << ".");
   }
-}
-
-// ----------------------------------------------------------------------------- Contact
-Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
-{
-  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
-    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Contact"));
-    declareChoice(*pl, "Obstacle", "Plane", {"Plane"}, "Shape of the rigid foundation.");
-    declareRealArray(*pl, "Obstacle point", Teuchos::tuple<double>(0.0, 0.0),
-                     "A point of the obstacle plane (d components).", {2, 3});
-    declareRealArray(*pl, "Obstacle normal", Teuchos::tuple<double>(0.0, 1.0),
-                     "Normal of the obstacle plane pointing towards the body (d components, "
-                     "normalised on input). A normal pointing away from the body is an error.",
-                     {2, 3});
-    declareChoice(*pl, "Frame", "Obstacle normal", {"Obstacle normal", "Body normal"},
-                  "Contact frame of each contact point (docs/contact.md, 'Contact model'): "
-                  "'Obstacle normal' measures the gap, the contact pressure and the slip along "
-                  "the obstacle's normal and tangent plane (the exact non-penetration direction "
-                  "for a rigid plane); 'Body normal' along the body's outward face normal (the "
-                  "talk's literal linearisation: a narrower, more peaked zone at a ~1% (2D) to "
-                  "~5% (3D) lower load).");
-    declareChoice(*pl, "Friction law", "Coulomb", {"None", "Tresca", "Coulomb"},
-                  "None: frictionless Signorini contact; Tresca: given slip bound; Coulomb: "
-                  "|σ_T| ≤ μ_F|σ_N|.");
-    declareReal(*pl, "Friction coefficient", 0.0, "Coulomb friction coefficient μ_F ≥ 0.", 0.0,
-                false, kInfinity, false);
-    declareReal(*pl, "Tresca bound", 0.0, "Slip bound s ≥ 0 of the Tresca law (stress units).",
-                0.0, false, kInfinity, false);
-    return pl;
-  }();
-  return valid;
-}
-
-ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl, int dimension)
-{
-  ContactSettings c;
-  c.obstacle = pl.get<std::string>("Obstacle");
-  c.obstaclePoint = toVector(pl.get<Teuchos::Array<double>>("Obstacle point"));
-  c.obstacleNormal = toVector(pl.get<Teuchos::Array<double>>("Obstacle normal"));
-  for (const char* key : {"Obstacle point", "Obstacle normal"}) {
-    const auto& v = std::string(key) == "Obstacle point" ? c.obstaclePoint : c.obstacleNormal;
-    SC_THROW_IF(static_cast<int>(v.size()) != dimension, InputError,
-                "'Contact/" << key << "' has " << v.size()
-                            << " components, but Problem/Dimension is " << dimension << ".");
-  }
-  double norm = 0.0;
-  for (double x : c.obstacleNormal)
-    norm += x * x;
-  norm = std::sqrt(norm);
-  SC_THROW_IF(norm == 0.0, InputError, "'Contact/Obstacle normal' is the zero vector.");
-  for (double& x : c.obstacleNormal)
-    x /= norm;
-  c.frame = pl.get<std::string>("Frame") == "Body normal" ? ContactFrame::BodyNormal
-                                                          : ContactFrame::ObstacleNormal;
-  const std::string law = pl.get<std::string>("Friction law");
-  c.frictionLaw = law == "Coulomb" ? FrictionLaw::Coulomb
-                  : law == "Tresca" ? FrictionLaw::Tresca
-                                    : FrictionLaw::None;
-  c.frictionCoefficient = pl.get<double>("Friction coefficient");
-  c.trescaBound = pl.get<double>("Tresca bound");
-  return c;
 }
 
 // ----------------------------------------------------------------------------- Method settings

@@ -1,12 +1,12 @@
 #pragma once
 // The data of a scene (DESIGN §1, §9), separate from the kernels that use it (STYLE.md 2):
-// problem dimension, material, boundary conditions, contact data, and the discretisation degree.
+// problem dimension, material, boundary conditions, and the discretisation degree.
 // Each struct owns one sublist of the deck and describes it in getValidParameters();
 // fromParameters() reads a validated list.
 //
-// The other method settings live with their packages: "Linear Solver" in
-// sc::solvers::LinearSolverFactory, "Estimator" in sc::estimator::EstimatorSettings,
-// "Adaptivity" in sc::adapt::AdaptivitySettings.
+// The other settings live with their packages: "Contact" (with "Contact/Newton") in
+// sc::contact::ContactSettings, "Linear Solver" in sc::solvers::LinearSolverFactory,
+// "Estimator" in sc::estimator::EstimatorSettings, "Adaptivity" in sc::adapt::AdaptivitySettings.
 
 #include <cmath>
 #include <string>
@@ -87,32 +87,6 @@ struct BoundaryConditions {
 
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static BoundaryConditions fromParameters(const Teuchos::ParameterList& bcList, int dimension);
-};
-
-enum class FrictionLaw { None, Tresca, Coulomb };
-/// The contact frame at a contact point (DESIGN §3, docs/contact.md "Contact model"): gap,
-/// normal stress and friction along the obstacle's normal (exact non-penetration direction for a
-/// rigid plane) or along the body's outward face normal (the talk's literal linearisation).
-enum class ContactFrame { ObstacleNormal, BodyNormal };
-
-/// "Contact": the rigid obstacle and the friction law (DESIGN §3).
-struct ContactSettings {
-  std::string obstacle = "Plane";
-  std::vector<double> obstaclePoint;   ///< a point of the plane
-  std::vector<double> obstacleNormal;  ///< unit normal of the plane, pointing into the body
-  ContactFrame frame = ContactFrame::ObstacleNormal;
-  FrictionLaw frictionLaw = FrictionLaw::None;
-  double frictionCoefficient = 0.0;
-  double trescaBound = 0.0;
-
-  /// Friction rows are built only when they can be non-zero (no friction machinery otherwise).
-  bool needsFriction() const
-  {
-    return (frictionLaw == FrictionLaw::Coulomb && frictionCoefficient > 0.0) ||
-           (frictionLaw == FrictionLaw::Tresca && trescaBound > 0.0);
-  }
-  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static ContactSettings fromParameters(const Teuchos::ParameterList& contactList, int dimension);
 };
 
 struct DiscretizationSettings {

@@ -16,7 +16,7 @@
 namespace sc::estimator {
 
 ContactContribution::ContactContribution(const disc::MixedElasticitySpace& space,
-                                         const core::ContactSettings& settings,
+                                         const contact::ContactSettings& settings,
                                          const core::Material& material,
                                          std::vector<std::string> contactBoundaries)
   : space_(space), settings_(settings), material_(material), boundaries_(std::move(contactBoundaries))
@@ -31,9 +31,9 @@ void ContactContribution::addTo(ErrorEstimate& est, assembly::ElementSolution& s
   const int d = space_.dim();
   const double twoMu = 2.0 * material_.shearModulus();
   const auto obstacle = contact::createObstacle(settings_, d);
-  const bool obstacleFrame = settings_.frame == core::ContactFrame::ObstacleNormal;
-  const bool coulomb = settings_.frictionLaw == core::FrictionLaw::Coulomb;
-  const bool tresca = settings_.frictionLaw == core::FrictionLaw::Tresca;
+  const bool obstacleFrame = settings_.frame == contact::ContactFrame::ObstacleNormal;
+  const bool coulomb = settings_.frictionLaw == contact::FrictionLaw::Coulomb;
+  const bool tresca = settings_.frictionLaw == contact::FrictionLaw::Tresca;
   const double cap = contact::missCap(m);  // as the contact solver
   std::vector<int> ids;
   for (const auto& name : boundaries_)

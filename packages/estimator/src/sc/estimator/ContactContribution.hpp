@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <sc/contact/ContactSettings.hpp>
 #include <sc/core/ProblemData.hpp>
 
 #include "sc/estimator/ErrorEstimator.hpp"
@@ -28,7 +29,7 @@ namespace sc::estimator {
 
 class ContactContribution : public EstimatorContribution {
 public:
-  ContactContribution(const disc::MixedElasticitySpace& space, const core::ContactSettings& settings,
+  ContactContribution(const disc::MixedElasticitySpace& space, const contact::ContactSettings& settings,
                       const core::Material& material, std::vector<std::string> contactBoundaries);
   void addTo(ErrorEstimate& estimate, assembly::ElementSolution& solution,
              const DisplacementReconstruction& reconstruction,
@@ -36,7 +37,7 @@ public:
 
 private:
   const disc::MixedElasticitySpace& space_;
-  core::ContactSettings settings_;
+  contact::ContactSettings settings_;
   core::Material material_;
   std::vector<std::string> boundaries_;
 };

@@ -1,0 +1,44 @@
+#pragma once
+// "Contact": the rigid obstacle, the contact frame and the friction law (DESIGN §3). The contact
+// package owns the whole sublist: getValidParameters() describes these keys and the "Newton"
+// sublist of ActiveSetSolver (the semismooth Newton settings, read by the solver itself);
+// fromParameters() reads a validated list.
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+namespace sc::contact {
+
+enum class FrictionLaw { None, Tresca, Coulomb };
+/// The contact frame at a contact point (DESIGN §3, docs/contact.md "Contact model"): gap,
+/// normal stress and friction along the obstacle's normal (exact non-penetration direction for a
+/// rigid plane) or along the body's outward face normal (the talk's literal linearisation).
+enum class ContactFrame { ObstacleNormal, BodyNormal };
+
+/// "Contact": the rigid obstacle and the friction law (DESIGN §3).
+struct ContactSettings {
+  std::string obstacle = "Plane";
+  std::vector<double> obstaclePoint;   ///< a point of the plane
+  std::vector<double> obstacleNormal;  ///< unit normal of the plane, pointing into the body
+  ContactFrame frame = ContactFrame::ObstacleNormal;
+  FrictionLaw frictionLaw = FrictionLaw::None;
+  double frictionCoefficient = 0.0;
+  double trescaBound = 0.0;
+
+  /// Friction rows are built only when they can be non-zero (no friction machinery otherwise).
+  bool needsFriction() const
+  {
+    return (frictionLaw == FrictionLaw::Coulomb && frictionCoefficient > 0.0) ||
+           (frictionLaw == FrictionLaw::Tresca && trescaBound > 0.0);
+  }
+  /// The valid "Contact" list: obstacle, frame and friction keys, and the "Newton" sublist
+  /// (ActiveSetSolver::getValidParameters()).
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  /// The obstacle, frame and friction of a validated "Contact" list, checked against the
+  /// dimension (InputError); its "Newton" sublist goes to the ActiveSetSolver.
+  static ContactSettings fromParameters(const Teuchos::ParameterList& contactList, int dimension);
+};
+
+}  // namespace sc::contact
