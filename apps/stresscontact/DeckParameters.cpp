@@ -40,11 +40,11 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
     add("Boundary Conditions", core::BoundaryConditions::getValidParameters(),
         "One sublist per boundary part of the mesh.");
     add("Contact", contact::ContactSettings::getValidParameters(),
-        "Rigid obstacle and friction law, for boundary parts of Type Contact (DESIGN §3).");
+        "Rigid obstacle and friction law, for boundary parts of Type Contact (docs/theory.md §\"Contact and friction\").");
     add("Discretization", core::DiscretizationSettings::getValidParameters(),
-        "Finite element spaces (DESIGN §2).");
+        "Finite element spaces (docs/theory.md §\"Mixed formulation\").");
     add("Linear Solver", solvers::LinearSolverFactory::getValidParameters(),
-        "Linear solver of each (Newton) step (DESIGN §6).");
+        "Linear solver of each (Newton) step (docs/theory.md §\"Linear solvers\").");
     add("Estimator", estimator::EstimatorSettings::getValidParameters(),
         "Reconstruction-based a posteriori error estimator (docs/theory.md).");
     add("Adaptivity", adapt::AdaptivitySettings::getValidParameters(),

@@ -82,8 +82,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                 "Linear Solver/Iterative/Stress block = Multigrid is not available in the "
                 "application yet (it needs the nested mesh hierarchy, which only the C++ API "
                 "provides: solvers::BlockStructure::multigrid, docs/solvers.md); use MUMPS or KLU2");
-    // MINRES needs a symmetric system: contact rows make it non-symmetric (DESIGN §3), and
-    // Symmetric = false declines to exploit symmetry.
+    // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md §"Contact
+    // and friction"), and Symmetric = false declines to exploit symmetry.
     const bool minres = ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative" &&
                         ls.isSublist("Iterative") && ls.sublist("Iterative").isParameter("Method") &&
                         ls.sublist("Iterative").get<std::string>("Method") == "MINRES";

@@ -4,7 +4,7 @@
 Peer code: GetFEM (Debian package python3-getfem), P2 displacements on isoparametric P2
 (curved) triangles, plane strain, E = 20600, nu = 0.28.
 
-Scene (DESIGN.md section 9): half disc x^2 + (y-1)^2 < 1, y < 1; top edge y = 1: u = (0, -0.01);
+Scene (docs/theory.md "Scenes"): half disc x^2 + (y-1)^2 < 1, y < 1; top edge y = 1: u = (0, -0.01);
 lower arc: frictionless contact with the rigid plane y = 0; f = 0.
 
 Two linearised contact models (gap measured from the undeformed arc):

@@ -2,7 +2,7 @@
 // robustness of the estimate (E × 10⁶). Sources of the expected numbers: hand-computed selections
 // for the small indicator arrays; for the scaling, the discrete problem driven by u_D is linear
 // in E on σ_h (A scales as 1/E, the data do not), with u_h, θ_h and u^R unchanged, so every part
-// of η² (each an energy) scales by exactly 10⁶ (DESIGN §4 prototype).
+// of η² (each an energy) scales by exactly 10⁶ (docs/theory.md §"Estimator" prototype).
 #include <cmath>
 
 #include <Teuchos_DefaultComm.hpp>

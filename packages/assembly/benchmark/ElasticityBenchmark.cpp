@@ -9,14 +9,14 @@
 // 0.5 in 3D), then uniform bisection until the DOF count exceeds --max-dofs. One uniform cycle
 // multiplies the DOFs by ~4 in 2D and ~8 in 3D; --mesh-size fills the gaps (DOFs ~ h^-d).
 //
-// setup = partition + DOF numbering (number_s, on the whole replicated mesh) + the exact
-// FECrsGraph of this rank's elements. Every time is the maximum over ranks (phases start after a
-// barrier); "per rank" rates are the global count / that time / number of ranks; peak memory is
-// the resident-set high-water mark (getrusage) since the start of the program, maximum and sum
-// over ranks. Iterative (issue #10): Belos MINRES with the block-diagonal preconditioner
-// (DESIGN §6) to a 1e-8 relative residual; "analyse" is then the preconditioner build (S_σ and
-// its factorisation), "factor" 0, "iters" the MINRES iterations. scripts/solver-study.sh runs the
-// tables of docs/solvers.md.
+// setup = partition + DOF numbering (number_s, on the whole replicated mesh) + the exact FECrsGraph
+// of this rank's elements. Every time is the maximum over ranks (phases start after a barrier);
+// "per rank" rates are the global count / that time / number of ranks; peak memory is the
+// resident-set high-water mark (getrusage) since the start of the program, maximum and sum over
+// ranks. Iterative (issue #10): Belos MINRES with the block-diagonal preconditioner (docs/theory.md
+// §"Linear solvers") to a 1e-8 relative residual; "analyse" is then the preconditioner build (S_σ
+// and its factorisation), "factor" 0, "iters" the MINRES iterations. scripts/solver-study.sh runs
+// the tables of docs/solvers.md.
 #include <sys/resource.h>
 
 #include <cstdio>

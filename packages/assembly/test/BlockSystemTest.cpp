@@ -31,7 +31,7 @@ using sc::assembly::CrsMatrix;
 using sc::assembly::MixedElasticityAssembler;
 using sc::assembly::MultiVector;
 
-// DESIGN §2: [[A, B1ᵀ, B2ᵀ], [B1, 0, 0], [B2, 0, 0]].
+// docs/theory.md §"Mixed formulation": [[A, B1ᵀ, B2ᵀ], [B1, 0, 0], [B2, 0, 0]].
 const std::pair<int, int> nonzeroBlocks[] = {{0, 0}, {0, 1}, {0, 2}, {1, 0}, {2, 0}};
 const std::pair<int, int> couplingBlocks[] = {{0, 1}, {0, 2}, {1, 0}, {2, 0}};
 
@@ -178,8 +178,9 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
     blockEntries += static_cast<long long>(plain.block(f, g)->getGlobalNumEntries());
   TEST_EQUALITY(blockEntries + zeroBlockEntriesAll, static_cast<long long>(M.getGlobalNumEntries()));
 
-  // B1 = (B1ᵀ)ᵀ and B2 = (B2ᵀ)ᵀ to round-off: M is assembled symmetrically (DESIGN §2: the matrix
-  // without contact is symmetric), only the order of the cross-rank sums may differ.
+  // B1 = (B1ᵀ)ᵀ and B2 = (B2ᵀ)ᵀ to round-off: M is assembled symmetrically (docs/theory.md §"Mixed
+  // formulation": the matrix without contact is symmetric), only the order of the cross-rank sums
+  // may differ.
   for (int f = 1; f < 3; ++f) {
     const double diff = difference(*plain.block(0, f), true, *plain.block(f, 0));
     const double norm = frobenius(*plain.block(f, 0));

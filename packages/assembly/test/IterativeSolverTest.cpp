@@ -1,9 +1,9 @@
-// The Krylov solver with the block-diagonal preconditioner diag(S_σ, 2μM_u, 2μM_θ) (DESIGN §6,
+// The Krylov solver with the block-diagonal preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §"Linear solvers",
 // issue #10) on the manufactured elasticity problems of docs/verification.md:
 //  - iteration counts to a 1e-8 relative residual (the true one) stay within 1.5× over refinement
 //    levels and ν ∈ {0.3, 0.49, 0.4999, 0.5}: the acceptance bound of issue #10. Measured when
 //    written (HRZ-lumped θ block): 45–58 (2D, 767–11777 DOFs), 67–77 (3D, 4452–33720 DOFs);
-//    DESIGN §6's prototype saw 21–36 with exact blocks, on the preconditioned residual;
+//    the design notes' (docs/theory.md §"Linear solvers") prototype saw 21–36 with exact blocks, on the preconditioned residual;
 //  - the solution agrees with MUMPS' to the solver tolerance, at every rank count this test runs;
 //  - non-convergence and unavailable components are clear errors.
 #include <algorithm>
@@ -90,7 +90,7 @@ TEUCHOS_UNIT_TEST(IterativeSolver, RobustInHAndLambda2D) { checkRobustness(2, 3,
 TEUCHOS_UNIT_TEST(IterativeSolver, RobustInHAndLambda3D) { checkRobustness(3, 2, out, success); }
 
 // Stress block = Multigrid: one V(1,1) cycle on the nested hierarchy with vertex-patch smoothers
-// (DESIGN §6), the scalable route. Same bound as with the exact block.
+// (docs/theory.md §"Linear solvers"), the scalable route. Same bound as with the exact block.
 void checkMultigrid(int dim, int levels, Teuchos::FancyOStream& out, bool& success)
 {
   int lo = 1 << 30, hi = 0;

@@ -1,5 +1,5 @@
 // Verification of the assembled mixed elasticity system (issue #4), run at 1, 2 and 4 ranks:
-// - patch test (DESIGN §2): the linear stress field of core::LinearPatchSolution lies in RT_k
+// - patch test (docs/theory.md §"Mixed formulation"): the linear stress field of core::LinearPatchSolution lies in RT_k
 //   for k ≥ 1, so σ_h = σ, θ_h = θ and div σ_h = div σ up to round-off on the unstructured Gmsh
 //   meshes of the half disc / unit cube (u_h is its L² projection; analytic argument in
 //   docs/verification.md). This is the test that catches orientation and Piola mistakes.

@@ -1,4 +1,4 @@
-// Building blocks of the stress-block multigrid (DESIGN §6, issue #10):
+// Building blocks of the stress-block multigrid (docs/theory.md §"Linear solvers", issue #10):
 //  - the RT prolongation is exact between nested meshes: the prolongated coarse solution, a
 //    fine-mesh function, equals the coarse one (values and divergence) at the cubature points of
 //    every fine element to rounding, 2D and 3D, k = 1 and 2, at any rank count;
@@ -151,7 +151,7 @@ TEUCHOS_UNIT_TEST(Multigrid, PatchesCoverTheStressDofs)
       << " DOFs, " << missing << " σ DOFs uncovered\n";
   TEST_EQUALITY(missing, 0);
   TEST_EQUALITY(total, static_cast<long long>(m->numVertices()));
-  TEST_COMPARE(largest, <=, 64u);  // DESIGN §6: ≤ 64 DOFs in 2D k = 1
+  TEST_COMPARE(largest, <=, 64u);  // docs/theory.md §"Linear solvers": ≤ 64 DOFs in 2D k = 1
 }
 
 }  // namespace

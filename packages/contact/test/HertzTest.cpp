@@ -1,6 +1,6 @@
-// Hertz contact (issue #5 acceptance; DESIGN §3, §9), at 1, 2 and 4 ranks. References:
-// plane-strain Hertz (Johnson 1985): E* = E/(1−ν²), a = √(4PR/(πE*)), p0 = 2P/(πa),
-// p(x) = p0 √(1 − x²/a²), with P the computed resultant (the half disc is finite).
+// Hertz contact (issue #5 acceptance; docs/theory.md §"Contact and friction", §9), at 1, 2 and 4
+// ranks. References: plane-strain Hertz (Johnson 1985): E* = E/(1−ν²), a = √(4PR/(πE*)), p0 =
+// 2P/(πa), p(x) = p0 √(1 − x²/a²), with P the computed resultant (the half disc is finite).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -200,12 +200,12 @@ FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::Fancy
 
 }  // namespace
 
-// ν = 0.28 (DESIGN §9) and the incompressible limit (issue #5: "converges, no locking or
-// oscillation in σ_N"): ν = 0.4999 and 0.5 meet the same Hertz checks (E* = E/(1−ν²) stays
-// finite), and the point-to-point staircase of σ_N grows by at most half over ν = 0.28 plus 0.2%
-// of p0 (a locking discretisation shows a checkerboard pressure here).
-// Two more sweeps than the other 2D cases in a smaller disc around the zone: the half-width is
-// read off the point spacing (docs/contact.md), which must be well below 3% of a.
+// ν = 0.28 (docs/theory.md §"Scenes") and the incompressible limit (issue #5: "converges, no
+// locking or oscillation in σ_N"): ν = 0.4999 and 0.5 meet the same Hertz checks (E* = E/(1−ν²)
+// stays finite), and the point-to-point staircase of σ_N grows by at most half over ν = 0.28 plus
+// 0.2% of p0 (a locking discretisation shows a checkerboard pressure here). Two more sweeps than
+// the other 2D cases in a smaller disc around the zone: the half-width is read off the point
+// spacing (docs/contact.md), which must be well below 3% of a.
 HertzCase frictionlessCase(double nu)
 {
   HertzCase h;
@@ -355,8 +355,9 @@ TEUCHOS_UNIT_TEST(Hertz, ZeroFrictionEqualsFrictionless)
 }
 
 // The Coulomb fixed point (Tresca problems with s = μ|σ_N| of the last outer step, the fallback of
-// DESIGN §3) converges to the semismooth Newton solution: same stick/slip sets, tractions equal
-// to 1e-6 of p0 (fixed-point tolerance 1e-8 on s), and it takes more linear solves.
+// docs/theory.md §"Contact and friction") converges to the semismooth Newton solution: same
+// stick/slip sets, tractions equal to 1e-6 of p0 (fixed-point tolerance 1e-8 on s), and it takes
+// more linear solves.
 TEUCHOS_UNIT_TEST(Hertz, CoulombFixedPointMatchesNewton)
 {
   HertzCase a = coarseHertz();
@@ -635,8 +636,9 @@ TEUCHOS_UNIT_TEST(Contact, SupportedDegrees)
   TEST_COMPARE(sc::disc::minRelativeFaceDofWeight(3, 3), <, 0.0);
 }
 
-// The obstacle's normal must point towards the body; the opposite is an input error (DESIGN §3's
-// sign trap: it used to "converge" with nothing in contact and a zero load). A deep overlap too.
+// The obstacle's normal must point towards the body; the opposite is an input error (the design
+// notes' (docs/theory.md §"Contact and friction") sign trap: it used to "converge" with nothing in
+// contact and a zero load). A deep overlap too.
 TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
@@ -663,7 +665,8 @@ TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
 // 3D cases: a separate, serial executable (contact_hertz3d) — much more expensive (about 4 min:
 // 3D Coulomb takes 44 fixed-point steps in the slip direction, docs/contact.md).
 namespace {
-// Hertz 3D of DESIGN §9 (half ball, E = 2.5, ν = 0.25, u_D = −0.025) on the test mesh.
+// Hertz 3D of docs/theory.md §"Scenes" (half ball, E = 2.5, ν = 0.25, u_D = −0.025) on the test
+// mesh.
 HertzCase hertz3DScene()
 {
   HertzCase h;

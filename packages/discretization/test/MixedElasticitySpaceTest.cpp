@@ -1,5 +1,5 @@
 // Tests of the discrete spaces that catch orientation and mapping mistakes before any system is
-// assembled (DESIGN §2):
+// assembled (docs/theory.md §"Mixed formulation"):
 // - DOF counts against the dimension formulas of RT_k, P_k (analytic);
 // - normal continuity: on every interior face, each global RT face DOF's function has the same
 //   normal trace seen from both elements (this fails for a wrong orientation or Piola map);
@@ -201,10 +201,11 @@ TEUCHOS_UNIT_TEST(MixedElasticitySpace, OwnershipCoversAllDofsOnce)
 
 TEUCHOS_UNIT_TEST(FaceDofPoints, PointValuesOnBoundaryFaces)
 {
-  // DESIGN §3: for RT_1 in 2D the face DOFs sit at 1/3 and 2/3 of each edge (Intrepid2
-  // equispaced lattice); the traction at p_j is s_j times the coefficient. Checked: the points
-  // lie on the face at the expected fractions, s_j ≠ 0, and Σ_j over a face of (φ_j·n) weights
-  // reproduces a constant flux (the flux of φ_j integrates to |F|/(k+1)·s_j·... is not needed).
+  // docs/theory.md §"Contact and friction": for RT_1 in 2D the face DOFs sit at 1/3 and 2/3 of each
+  // edge (Intrepid2 equispaced lattice); the traction at p_j is s_j times the coefficient. Checked:
+  // the points lie on the face at the expected fractions, s_j ≠ 0, and Σ_j over a face of (φ_j·n)
+  // weights reproduces a constant flux (the flux of φ_j integrates to |F|/(k+1)·s_j·... is not
+  // needed).
   auto mesh = makeMesh("Half disc", 2, 0.3);
   sc::disc::MixedElasticitySpace space(mesh, 1, std::vector<int>(mesh->numElements(), 0), 0);
   int checked = 0;
@@ -226,7 +227,7 @@ TEUCHOS_UNIT_TEST(FaceDofPoints, PointValuesOnBoundaryFaces)
       const double off = std::abs((p.x[0] - a[0]) * (b[1] - a[1]) - (p.x[1] - a[1]) * (b[0] - a[0]));
       TEST_COMPARE(off, <=, 1e-12);
       fractions.push_back(s);
-      // Intrepid2 13.2 scaling (DESIGN §3): |s_j| = 2/|e|.
+      // Intrepid2 13.2 scaling (docs/theory.md §"Contact and friction"): |s_j| = 2/|e|.
       TEST_FLOATING_EQUALITY(std::abs(p.scale), 2.0 / mesh->faceMeasure(f), 1e-10);
     }
     std::sort(fractions.begin(), fractions.end());

@@ -1,4 +1,4 @@
-// Scene geometries (DESIGN §9) and their Gmsh (OpenCASCADE) models.
+// Scene geometries (docs/theory.md §"Scenes") and their Gmsh (OpenCASCADE) models.
 #include <sc/mesh/BoxGeometry.hpp>
 #include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
@@ -95,7 +95,8 @@ std::string HalfBallGeometry::classifyBoundaryEntity(const std::array<double, 3>
   return std::abs(com[2] - 1.0) < 1e-8 * radius_ ? "Top" : "Cap";
 }
 
-// Box ----------------------------------------------------------------------------------------------
+// Box
+// ----------------------------------------------------------------------------------------------
 BoxGeometry::BoxGeometry(std::vector<double> lower, std::vector<double> upper,
                          std::string sceneName)
     : lower_(std::move(lower)), upper_(std::move(upper)), sceneName_(std::move(sceneName))

@@ -378,8 +378,9 @@ TEUCHOS_UNIT_TEST(Refinement, KuhnCubeMeshBehavesLikeMaubachBisection)
   TEST_FLOATING_EQUALITY(r.mesh()->measure(), 27.0, 1e-12);
 }
 
-// DESIGN §2: after splitting the initial tetrahedra with all vertices on the boundary, none exist,
-// and bisection (uniform and local, with projection) never creates new ones. Measure unchanged.
+// docs/theory.md §"Mixed formulation": after splitting the initial tetrahedra with all vertices on
+// the boundary, none exist, and bisection (uniform and local, with projection) never creates new
+// ones. Measure unchanged.
 TEUCHOS_UNIT_TEST(Refinement, SplitBoundaryTetrahedraStayAbsent)
 {
   auto g = Teuchos::rcp(new HalfBallGeometry(1.0));

@@ -9,9 +9,10 @@
 //   saddle point of the unit tests, blocks 1e-8 and 1e4), contact (saddle with replaced rows).
 //
 // Per size and solver one line: DOFs, stored entries, equilibration / analysis / factorisation /
-// solve seconds, a second factorisation with new values (symbolic reuse, DESIGN §6), DOFs/s of
-// analysis + factorisation + solve, entries in the factors, peak resident memory (getrusage, max
-// over ranks, cumulative over the run), MUMPS INFOG(21)/(22) (MB, max per rank / sum), residual.
+// solve seconds, a second factorisation with new values (symbolic reuse, docs/theory.md §"Linear
+// solvers"), DOFs/s of analysis + factorisation + solve, entries in the factors, peak resident
+// memory (getrusage, max over ranks, cumulative over the run), MUMPS INFOG(21)/(22) (MB, max per
+// rank / sum), residual.
 
 #include <sys/resource.h>
 

@@ -20,17 +20,19 @@ Teuchos::RCP<CrsMatrix> poisson2d(const Teuchos::RCP<const Teuchos::Comm<int>>& 
 /// 7-point Laplacian on an n × n × n grid, SPD.
 Teuchos::RCP<CrsMatrix> poisson3d(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int n);
 
-/// Symmetric indefinite saddle point [[sM·K, sB·Bᵀ], [sB·B, 0]]: K = 2D Laplacian + I on an
-/// n × n grid (n² unknowns), B (n²/2 × n²) has B[p,2p] = 2, B[p,2p+1] = −1, B[p,2p+3] = 0.5, so
-/// its columns 2p form 2I: full row rank. With sM = 1e-8, sB = 1e4 the blocks differ by 12 orders
-/// of magnitude, like compliance (~1/E) and divergence blocks (DESIGN §3). n must be even.
+/// Symmetric indefinite saddle point [[sM·K, sB·Bᵀ], [sB·B, 0]]: K = 2D Laplacian + I on an n × n
+/// grid (n² unknowns), B (n²/2 × n²) has B[p,2p] = 2, B[p,2p+1] = −1, B[p,2p+3] = 0.5, so its
+/// columns 2p form 2I: full row rank. With sM = 1e-8, sB = 1e4 the blocks differ by 12 orders of
+/// magnitude, like compliance (~1/E) and divergence blocks (docs/theory.md §"Contact and
+/// friction"). n must be even.
 Teuchos::RCP<CrsMatrix> saddlePoint(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int n,
                                     double scaleM, double scaleB);
 
-/// Copy of A (same graph) in which every row whose global index is ≡ 0 mod period is replaced
-/// as a contact row would be (DESIGN §3): all entries 0 except the diagonal = 1 and the entry in
-/// column row+1, if stored, = coupling (a slip row coupling σ_T to σ_N). Non-symmetric. Only rows
-/// below rowLimit (if >= 0) are replaced: in a saddle point, contact rows are stress rows.
+/// Copy of A (same graph) in which every row whose global index is ≡ 0 mod period is replaced as a
+/// contact row would be (docs/theory.md §"Contact and friction"): all entries 0 except the diagonal
+/// = 1 and the entry in column row+1, if stored, = coupling (a slip row coupling σ_T to σ_N).
+/// Non-symmetric. Only rows below rowLimit (if >= 0) are replaced: in a saddle point, contact rows
+/// are stress rows.
 Teuchos::RCP<CrsMatrix> withReplacedRows(const CrsMatrix& A, long long period, double coupling,
                                          long long rowLimit = -1);
 

@@ -3,7 +3,7 @@
 // rank's owned elements, the global list of elements to bisect. The mesh is replicated, so every
 // rank gets the same list: the indicators are summed into one array indexed by element (each
 // element has exactly one owner, so the sum is exact) and every rank runs the same
-// deterministic selection. Marking is by η_T², not by η_T²/|T| (DESIGN §4).
+// deterministic selection. Marking is by η_T², not by η_T²/|T| (docs/theory.md §"Estimator").
 #include <memory>
 #include <string>
 #include <vector>

@@ -28,7 +28,7 @@ using GO = Map::global_ordinal_type;
 using Node = Map::node_type;
 using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
 
-// σ couples to every field; u and θ only to σ (DESIGN §2).
+// σ couples to every field; u and θ only to σ (docs/theory.md §"Mixed formulation").
 bool structurallyNonzero(int row, int col) { return row == 0 || col == 0; }
 
 }  // namespace
@@ -119,7 +119,7 @@ void BlockSystem::build(const CrsMatrix& M)
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, dropped, Teuchos::outArg(droppedAll));
   SC_THROW_IF(droppedAll > 0, core::InternalError,
               "BlockSystem: the matrix has " << droppedAll << " non-zero entries in the uu, uθ, θu "
-                  "or θθ blocks, which the mixed elasticity system has as zero blocks (DESIGN §2)");
+                  "or θθ blocks, which the mixed elasticity system has as zero blocks (docs/theory.md §\"Mixed formulation\")");
 
   // Each non-zero block as local CSR arrays on a column map made of the columns of M it uses
   // (in M's column-map order, so sorted rows stay sorted).

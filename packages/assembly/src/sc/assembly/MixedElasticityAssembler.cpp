@@ -244,8 +244,9 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       const core::BoundaryType type = bc ? bc->type : core::BoundaryType::Free;
       const auto& faceDofs = S.stressFaceLocalDofs(lf);
       const int nF = static_cast<int>(faceDofs.size());
-      // Contact: no term here. ⟨ũ, τn⟩_ΓC is the residual of these rows, which the contact
-      // package (ActiveSetSolver) turns into the contact conditions (DESIGN §3).
+      // Contact: no term here. ⟨ũ, τn⟩_ΓC is the residual of these rows, which the contact package
+      // (ActiveSetSolver) turns into the contact conditions (docs/theory.md §"Contact and
+      // friction").
       if (type == core::BoundaryType::Contact)
         continue;
       if (type == core::BoundaryType::Displacement) {

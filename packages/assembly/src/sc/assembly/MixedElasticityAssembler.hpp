@@ -1,5 +1,5 @@
 #pragma once
-// Tpetra assembly of the dual mixed elasticity system (DESIGN §2):
+// Tpetra assembly of the dual mixed elasticity system (docs/theory.md §"Mixed formulation"):
 //
 //   [ A   B1ᵀ  B2ᵀ ] [σ]   [⟨u_D, τn⟩_ΓD]       (Aσ, τ) = ((1/2μ)(σ − c_d tr σ I), τ)
 //   [ B1  0    0   ] [u] = [  −(f, v)   ]       (B1 σ, v) = (div σ, v)
@@ -34,10 +34,11 @@ using Map = Tpetra::Map<>;
 using CrsMatrix = Tpetra::CrsMatrix<>;
 using MultiVector = Tpetra::MultiVector<>;
 
-/// One term of the weak symmetry (as τ)_comp = Σ sign · τ_{row,col} (DESIGN §1: 2D τ12 − τ21;
-/// 3D (τ32 − τ23, τ13 − τ31, τ21 − τ12)), 0-based. The same table defines the skew matrix S(θ)
-/// with S:τ = θ · as τ (S_{row,col} = sign · θ_comp), which the displacement reconstruction adds to
-/// Aσ_h (docs/theory.md): one definition, so the two cannot disagree on the sign.
+/// One term of the weak symmetry (as τ)_comp = Σ sign · τ_{row,col} (docs/theory.md §"The problem":
+/// 2D τ12 − τ21; 3D (τ32 − τ23, τ13 − τ31, τ21 − τ12)), 0-based. The same table defines the skew
+/// matrix S(θ) with S:τ = θ · as τ (S_{row,col} = sign · θ_comp), which the displacement
+/// reconstruction adds to Aσ_h (docs/theory.md): one definition, so the two cannot disagree on the
+/// sign.
 struct AsymmetryTerm {
   int comp, row, col;
   double sign;
@@ -82,15 +83,16 @@ public:
   /// The values of an owned-map vector on the overlap map (for element-wise postprocessing).
   Teuchos::RCP<MultiVector> toOverlap(const MultiVector& owned) const;
   const AssemblyStatistics& statistics() const { return stats_; }
-  /// Symmetric block scaling D (√(2μ) on σ DOFs, 1/√(2μ) on u and θ DOFs): D M D has an A block
-  /// of order one whatever E is, which a row/column equilibration cannot find (the rows of σ have
-  /// O(1) entries from B either way). Solve D M D y = D b, x = D y (DESIGN §3: "equilibrate").
+  /// Symmetric block scaling D (√(2μ) on σ DOFs, 1/√(2μ) on u and θ DOFs): D M D has an A block of
+  /// order one whatever E is, which a row/column equilibration cannot find (the rows of σ have O(1)
+  /// entries from B either way). Solve D M D y = D b, x = D y (docs/theory.md §"Contact and
+  /// friction": "equilibrate").
   Teuchos::RCP<const MultiVector> physicalScaling(double twoMu) const;
   const disc::MixedElasticitySpace& space() const { return *space_; }
-  /// The L² mass matrices of the displacement (element-block diagonal) and rotation fields,
-  /// (u, v) and (θ, η), in one matrix with the system's graph and maps (σ rows zero, no 2μ):
-  /// the u and θ blocks of the block-diagonal preconditioner (DESIGN §6). Computed on the first
-  /// call after assemble() and cached until the next assemble().
+  /// The L² mass matrices of the displacement (element-block diagonal) and rotation fields, (u, v)
+  /// and (θ, η), in one matrix with the system's graph and maps (σ rows zero, no 2μ): the u and θ
+  /// blocks of the block-diagonal preconditioner (docs/theory.md §"Linear solvers"). Computed on
+  /// the first call after assemble() and cached until the next assemble().
   Teuchos::RCP<const CrsMatrix> fieldMassMatrix() const;
 
   struct Impl;

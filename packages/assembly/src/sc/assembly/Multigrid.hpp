@@ -1,7 +1,7 @@
 #pragma once
-// What the geometric multigrid of the stress block needs from the discretisation (DESIGN §6):
-// the exact prolongation of RT_k stresses between nested meshes, and the vertex patches of the
-// additive Schwarz (Arnold–Falk–Winther) smoother. Tpetra stays in Multigrid.cpp.
+// What the geometric multigrid of the stress block needs from the discretisation (docs/theory.md
+// §"Linear solvers"): the exact prolongation of RT_k stresses between nested meshes, and the vertex
+// patches of the additive Schwarz (Arnold–Falk–Winther) smoother. Tpetra stays in Multigrid.cpp.
 #include <vector>
 
 #include <Teuchos_Comm.hpp>

@@ -33,7 +33,7 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
     core::declareInt(*pl, "Maximum iterations", 50,
                      "Semismooth Newton (active-set) steps before giving up with an error.", 1, 10000);
     core::declareReal(*pl, "Penalty factor", 1.0,
-                      "Factor on c = 2μ/(h_F |F|) (DESIGN §3). The solution does not depend on c; "
+                      "Factor on c = 2μ/(h_F |F|) (docs/theory.md §\"Contact and friction\"). The solution does not depend on c; "
                       "a very large c can make Coulomb cycle.",
                       0.0, true, core::kInfinity, false);
     core::declareInt(*pl, "Maximum remedies", 5,
@@ -583,7 +583,7 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
       const ContactPoint& p = points_[first[blk] + pp];
       // Frame vectors per equation: row 0 normal, rows 1.. tangential.
       const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
-      // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (DESIGN §3), with
+      // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (docs/theory.md §"Contact and friction"), with
       // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
       // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
       //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
@@ -702,7 +702,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
                   << "); falling back to the Coulomb fixed point" << std::endl;
     }
   }
-  // Coulomb as a fixed point on the friction bound (DESIGN §3 fallback): Tresca problems with
+  // Coulomb as a fixed point on the friction bound (docs/theory.md §"Contact and friction" fallback): Tresca problems with
   // s_p = μ max(0, −σ_N,p) of the previous outer iterate, until s settles.
   const auto first = stats_;
   int outer = 0, total = 0;

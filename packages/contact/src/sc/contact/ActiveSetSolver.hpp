@@ -1,5 +1,6 @@
 #pragma once
-// Frictional contact on the stress DOFs (DESIGN §3): semismooth Newton / primal–dual active set.
+// Frictional contact on the stress DOFs (docs/theory.md §"Contact and friction"): semismooth Newton
+// / primal–dual active set.
 //
 // The constraints act on m coefficients per contact face (docs/contact.md "Constraint
 // points"): in 2D the traction at the RT face DOF points (s_p × the DOF coefficients, s_p from

@@ -13,11 +13,12 @@ namespace sc::contact {
 enum class PointStatus { Free = 0, Stick = 1, Slip = 2 };
 std::string toString(PointStatus s);
 
-/// One contact constraint: a coefficient of the normal traction on a contact face (DESIGN §3,
-/// docs/contact.md "Constraint points"). Either a face DOF point p (the coefficient is the
-/// traction σn(p), the dual weight is its Lagrange function ℓ_p) or, where the DOF points'
-/// interpolatory rule cannot keep the weighted gap of a non-negative linear gap non-negative
-/// (3D, 2D k = 3), a Bernstein coefficient B_p of the face (non-negative dual weight B_p).
+/// One contact constraint: a coefficient of the normal traction on a contact face (docs/theory.md
+/// §"Contact and friction", docs/contact.md "Constraint points"). Either a face DOF point p (the
+/// coefficient is the traction σn(p), the dual weight is its Lagrange function ℓ_p) or, where the
+/// DOF points' interpolatory rule cannot keep the weighted gap of a non-negative linear gap
+/// non-negative (3D, 2D k = 3), a Bernstein coefficient B_p of the face (non-negative dual weight
+/// B_p).
 struct ContactPoint {
   int face = -1;                     ///< mesh face
   int block = -1;                    ///< index of its face block in the solver (internal)

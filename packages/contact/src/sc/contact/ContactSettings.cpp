@@ -35,7 +35,7 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
     declareReal(*pl, "Tresca bound", 0.0, "Slip bound s ≥ 0 of the Tresca law (stress units).",
                 0.0, false, kInfinity, false);
     pl->set("Newton", *ActiveSetSolver::getValidParameters(),
-            "Semismooth Newton / active-set solver (DESIGN §3).");
+            "Semismooth Newton / active-set solver (docs/theory.md §\"Contact and friction\").");
     return pl;
   }();
   return valid;

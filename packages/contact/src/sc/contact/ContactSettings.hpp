@@ -1,8 +1,8 @@
 #pragma once
-// "Contact": the rigid obstacle, the contact frame and the friction law (DESIGN §3). The contact
-// package owns the whole sublist: getValidParameters() describes these keys and the "Newton"
-// sublist of ActiveSetSolver (the semismooth Newton settings, read by the solver itself);
-// fromParameters() reads a validated list.
+// "Contact": the rigid obstacle, the contact frame and the friction law (docs/theory.md §"Contact
+// and friction"). The contact package owns the whole sublist: getValidParameters() describes these
+// keys and the "Newton" sublist of ActiveSetSolver (the semismooth Newton settings, read by the
+// solver itself); fromParameters() reads a validated list.
 #include <string>
 #include <vector>
 
@@ -12,12 +12,13 @@
 namespace sc::contact {
 
 enum class FrictionLaw { None, Tresca, Coulomb };
-/// The contact frame at a contact point (DESIGN §3, docs/contact.md "Contact model"): gap,
-/// normal stress and friction along the obstacle's normal (exact non-penetration direction for a
-/// rigid plane) or along the body's outward face normal (the talk's literal linearisation).
+/// The contact frame at a contact point (docs/theory.md §"Contact and friction", docs/contact.md
+/// "Contact model"): gap, normal stress and friction along the obstacle's normal (exact
+/// non-penetration direction for a rigid plane) or along the body's outward face normal (the talk's
+/// literal linearisation).
 enum class ContactFrame { ObstacleNormal, BodyNormal };
 
-/// "Contact": the rigid obstacle and the friction law (DESIGN §3).
+/// "Contact": the rigid obstacle and the friction law (docs/theory.md §"Contact and friction").
 struct ContactSettings {
   std::string obstacle = "Plane";
   std::vector<double> obstaclePoint;   ///< a point of the plane

@@ -42,7 +42,7 @@ double PlaneObstacle::gap(const double* x, const double* n, double cap) const
 std::array<double, 3> PlaneObstacle::contactNormal(const double* /*x*/) const
 {
   // Out of the body, into the obstacle: −ν. (With +ν the solver "converges" in one step with
-  // nothing in contact: the sign trap of DESIGN §3, pinned by a test.)
+  // nothing in contact: the sign trap of docs/theory.md §"Contact and friction", pinned by a test.)
   return {-normal_[0], -normal_[1], -normal_[2]};
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// Rigid obstacles (DESIGN §3, docs/contact.md "Contact model"). A contact point measures its gap
-// to the obstacle along the unit normal of its contact frame: the obstacle's normal (the exact
-// non-penetration direction for a rigid plane, the default) or the body's outward face normal
-// (the talk's literal linearisation). A point behind the obstacle surface (an initial overlap)
-// has a negative gap, which the linearised Signorini problem handles. Only a ray (nearly)
-// parallel to the obstacle, or pointing away from it, misses: it gets a finite cap (never ∞,
-// since c·G is formed), so such points stay free.
+// Rigid obstacles (docs/theory.md §"Contact and friction", docs/contact.md "Contact model"). A
+// contact point measures its gap to the obstacle along the unit normal of its contact frame: the
+// obstacle's normal (the exact non-penetration direction for a rigid plane, the default) or the
+// body's outward face normal (the talk's literal linearisation). A point behind the obstacle
+// surface (an initial overlap) has a negative gap, which the linearised Signorini problem handles.
+// Only a ray (nearly) parallel to the obstacle, or pointing away from it, misses: it gets a finite
+// cap (never ∞, since c·G is formed), so such points stay free.
 #include <array>
 #include <memory>
 #include <vector>

@@ -2,7 +2,7 @@
 // Exact solutions for verification (manufactured solutions, patch tests): σ, u, θ and the data
 // f, u_D, t they induce. Points are given as x[0..d-1]; tensors row-major d×d.
 //
-// SmoothManufacturedSolution is robust in the incompressible limit (DESIGN §1, issue #4):
+// SmoothManufacturedSolution is robust in the incompressible limit (docs/theory.md §"The problem", issue #4):
 //   u = u0 + (1/λ) ∇φ,  div u0 = 0,  φ = Π sin(ω x_i),
 //   2D: u0 = curl(sin ωx sin ωy);  3D: u0 = (ω sx cy sz, −ω cx sy sz, 0)  (s_i = sin ωx_i),
 // with wavenumber ω (default π: one half wave across the unit square/cube),
@@ -29,7 +29,7 @@ public:
   virtual void stress(const double* x, double* sigma) const = 0;
   /// u(x), d components.
   virtual void displacement(const double* x, double* u) const = 0;
-  /// θ(x) = the skew part of ∇u as in DESIGN §4: 2D one value ½(∂y u1 − ∂x u2);
+  /// θ(x) = the skew part of ∇u as in docs/theory.md §"Estimator": 2D one value ½(∂y u1 − ∂x u2);
   /// 3D three values (½(∂y u3 − ∂z u2), ½(∂z u1 − ∂x u3), ½(∂x u2 − ∂y u1)).
   virtual void rotation(const double* x, double* theta) const = 0;
   /// Body force f = −div σ.

@@ -1,5 +1,5 @@
 #pragma once
-// Parameter-list conventions of StressContact (DESIGN §8, STYLE.md "Trilinos" anchor).
+// Parameter-list conventions of StressContact (docs/output.md, STYLE.md "Trilinos" anchor).
 //
 // Every component describes its sublist in a static getValidParameters(): each entry has a
 // default, a doc string and, for ranges and choices, a validator. The driver merges those lists
@@ -102,8 +102,8 @@ void declareRealArray(Teuchos::ParameterList& list, const std::string& name,
                       std::vector<int> allowedSizes);
 
 /// Check `user` against `valid` (recursively), then fill in defaults. Throws InputError naming
-/// `origin` (e.g. the deck's file name), the key path, the value and what would be valid.
-/// int values given for double keys are converted (an XML author writing type="int" for 1 means 1.0).
+/// `origin` (e.g. the deck's file name), the key path, the value and what would be valid. int
+/// values given for double keys are converted (an XML author writing type="int" for 1 means 1.0).
 void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
                         const std::string& origin);
 

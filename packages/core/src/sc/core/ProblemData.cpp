@@ -65,7 +65,7 @@ Teuchos::RCP<const Teuchos::ParameterList> Material::getValidParameters()
                 0.0, true, 1e100, false);
     declareReal(*pl, "Poisson ratio", 0.3,
                 "Poisson's ratio ν in [0, 0.5]; 0.5 (incompressible) is valid: the method never "
-                "forms λ (DESIGN §1).",
+                "forms λ (docs/theory.md §\"The problem\").",
                 0.0, false, 0.5, false);
     return pl;
   }();
@@ -214,7 +214,7 @@ Teuchos::RCP<const Teuchos::ParameterList> DiscretizationSettings::getValidParam
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Discretization"));
     declareInt(*pl, "Degree", 1,
                "Polynomial degree k of RT_k (stress rows) × DP_k (displacement) × CP_k "
-               "(rotation), DESIGN §2.",
+               "(rotation), docs/theory.md §\"Mixed formulation\".",
                1, 4);
     return pl;
   }();

@@ -1,6 +1,6 @@
 #pragma once
-// The data of a scene (DESIGN §1, §9), separate from the kernels that use it (STYLE.md 2):
-// problem dimension, material, boundary conditions, and the discretisation degree.
+// The data of a scene (docs/theory.md §"The problem", §9), separate from the kernels that use it
+// (STYLE.md 2): problem dimension, material, boundary conditions, and the discretisation degree.
 // Each struct owns one sublist of the deck and describes it in getValidParameters();
 // fromParameters() reads a validated list.
 //
@@ -25,8 +25,8 @@ struct ProblemSettings {
   static ProblemSettings fromParameters(const Teuchos::ParameterList& problemList);
 };
 
-/// Isotropic linear elastic material given by E and ν. λ is never formed (DESIGN §1), so
-/// ν = 0.5 (incompressible) is valid.
+/// Isotropic linear elastic material given by E and ν. λ is never formed (docs/theory.md §"The
+/// problem"), so ν = 0.5 (incompressible) is valid.
 struct Material {
   double youngModulus = 1.0;
   double poissonRatio = 0.3;
@@ -48,7 +48,7 @@ struct Material {
       trace += tau[i * dim + i];
     return (tt - complianceCoefficient(dim) * trace * trace) / (2.0 * shearModulus());
   }
-  /// Plane-strain modulus E* = E/(1 − ν²) used by the Hertz formulas (DESIGN §9).
+  /// Plane-strain modulus E* = E/(1 − ν²) used by the Hertz formulas (docs/theory.md §"Scenes").
   double planeStrainModulus() const
   {
     return youngModulus / (1.0 - poissonRatio * poissonRatio);
@@ -90,7 +90,7 @@ struct BoundaryConditions {
 };
 
 struct DiscretizationSettings {
-  int degree = 1;  ///< k of RT_k × DP_k × CP_k (DESIGN §2)
+  int degree = 1;  ///< k of RT_k × DP_k × CP_k (docs/theory.md §"Mixed formulation")
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static DiscretizationSettings fromParameters(const Teuchos::ParameterList& list);
 };

@@ -86,7 +86,7 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
     for (int j = 0; j < nF; ++j)
       SC_THROW_IF(j != best && std::abs(T[l * nF + j]) > 1e-10 * std::abs(s), core::InternalError,
                   "RT face DOFs of element " << e << " are not point values at the face lattice "
-                  "(the contact method needs nodal DOFs, DESIGN §3)");
+                  "(the contact method needs nodal DOFs, docs/theory.md §\"Contact and friction\")");
     SC_THROW_IF(used[best], core::InternalError, "two lattice points share face DOF " << best);
     used[best] = true;
     FaceDofPoint& p = points[best];

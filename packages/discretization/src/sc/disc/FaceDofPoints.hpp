@@ -1,12 +1,12 @@
 #pragma once
 // The RT face DOFs of Intrepid2's HDIV In_FEM bases (equispaced lattice) are point values of the
-// normal flux at lattice points of the face, up to a scale: DOF j of a face is ±(φ_j·n)(p_j)
-// times a face-size factor (DESIGN §3). Contact works with these points, so this finds them:
-// for each face DOF, its physical point p_j and s_j = (φ_j·n)(p_j) with the outward unit normal
-// n of the element (sign included), after checking (φ_j·n)(p_l) = 0 for l ≠ j. An element's
-// traction at p_j is then t_i(p_j) = s_j c_{i,j} with c_{i,j} the coefficient of row i's DOF j.
-// On a curved element (quadratic map) the Piola map keeps the DOFs point values of the normal
-// flux (φ·n dS = φ̂·n̂ dŜ), with n and s_j taken at each point.
+// normal flux at lattice points of the face, up to a scale: DOF j of a face is ±(φ_j·n)(p_j) times
+// a face-size factor (docs/theory.md §"Contact and friction"). Contact works with these points, so
+// this finds them: for each face DOF, its physical point p_j and s_j = (φ_j·n)(p_j) with the
+// outward unit normal n of the element (sign included), after checking (φ_j·n)(p_l) = 0 for l ≠ j.
+// An element's traction at p_j is then t_i(p_j) = s_j c_{i,j} with c_{i,j} the coefficient of row
+// i's DOF j. On a curved element (quadratic map) the Piola map keeps the DOFs point values of the
+// normal flux (φ·n dS = φ̂·n̂ dŜ), with n and s_j taken at each point.
 #include <array>
 #include <vector>
 

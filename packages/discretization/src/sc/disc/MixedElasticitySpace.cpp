@@ -28,7 +28,8 @@ MixedElasticitySpace::Impl::Impl(int d, int k) : dim(d)
   rtPoints = k == 1 ? Intrepid2::POINTTYPE_EQUISPACED : Intrepid2::POINTTYPE_WARPBLEND;
   if (d == 2) {
     topology = shards::CellTopology(shards::getCellTopologyData<shards::Triangle<3>>());
-    // Intrepid2's HDIV order n spans RT_{n-1} (DESIGN §2): order k+1 for RT_k.
+    // Intrepid2's HDIV order n spans RT_{n-1} (docs/theory.md §"Mixed formulation"): order k+1 for
+    // RT_k.
     rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TRI_In_FEM<Device, double, double>(k + 1, rtPoints));
     pk = Teuchos::rcp(new Intrepid2::Basis_HGRAD_TRI_Cn_FEM<Device, double, double>(k));
   } else {
@@ -64,7 +65,7 @@ MixedElasticitySpace::MixedElasticitySpace(Teuchos::RCP<const mesh::SimplexMesh>
     elementOwner_(std::move(elementOwner))
 {
   SC_THROW_IF(degree < 1, core::InputError,
-              "'Discretization/Degree' = " << degree << ": the method needs k >= 1 (DESIGN §2).");
+              "'Discretization/Degree' = " << degree << ": the method needs k >= 1 (docs/theory.md §\"Mixed formulation\").");
   SC_THROW_IF(static_cast<int>(elementOwner_.size()) != mesh_->numElements(), core::InternalError,
               "partition has " << elementOwner_.size() << " entries for "
                                << mesh_->numElements() << " elements");

@@ -1,5 +1,5 @@
 #pragma once
-// The finite element spaces of the dual mixed method (DESIGN §2) on a simplicial mesh:
+// The finite element spaces of the dual mixed method (docs/theory.md §"Mixed formulation") on a simplicial mesh:
 //   σ: d rows, each in RT_k   (Intrepid2 Basis_HDIV_{TRI,TET}_In_FEM(k+1), Piola-mapped)
 //   u: d components in DP_k   (Basis_HGRAD_{TRI,TET}_Cn_FEM(k), element-local DOFs)
 //   θ: r components in CP_k   (same basis, continuous; r = 1 in 2D, 3 in 3D)

@@ -1,5 +1,5 @@
 #pragma once
-// The contact and friction parts of η_CF (docs/theory.md §"Contact terms", DESIGN §4), added to
+// The contact and friction parts of η_CF (docs/theory.md §"Contact terms", docs/theory.md §"Estimator"), added to
 // the elasticity estimate by ErrorEstimator::addContribution. On each contact face F, at face
 // quadrature points, in the contact frame (n, tangent plane) of the contact solver
 // (Contact/Frame) with the gap g along n, t = σ_h n_F, σ_N = n·t, σ_T = t − σ_N n,

@@ -1,5 +1,5 @@
 #pragma once
-// Conforming local and uniform refinement of simplicial meshes by bisection (DESIGN §5):
+// Conforming local and uniform refinement of simplicial meshes by bisection (docs/theory.md §"Adaptivity"):
 // - 2D: newest-vertex bisection (NVB). Each triangle stores its vertices (v0, v1, v2) with the
 //   refinement edge v0v1 opposite the newest vertex v2; children (v2, v0, m) and (v1, v2, m) keep
 //   the positive orientation. The initial refinement edge is the longest edge.

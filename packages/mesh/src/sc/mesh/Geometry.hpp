@@ -1,7 +1,8 @@
 #pragma once
-// Exact description of a scene's domain (DESIGN §9): its boundary part names, which parts are
-// curved, the projection of a point onto a curved part (used to place new boundary vertices during
-// refinement, DESIGN §5), and how to build the domain in Gmsh for the initial mesh.
+// Exact description of a scene's domain (docs/theory.md §"Scenes"): its boundary part names, which
+// parts are curved, the projection of a point onto a curved part (used to place new boundary
+// vertices during refinement, docs/theory.md §"Adaptivity"), and how to build the domain in Gmsh
+// for the initial mesh.
 
 #include <array>
 #include <cmath>

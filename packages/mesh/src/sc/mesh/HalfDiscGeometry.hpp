@@ -1,6 +1,6 @@
 #pragma once
-// Hertz 2D scene (DESIGN §9): x² + (y−1)² < R², y < 1. Boundary parts: "Top" (the flat edge y = 1,
-// part id 0) and "Arc" (the lower half circle, curved, part id 1).
+// Hertz 2D scene (docs/theory.md §"Scenes"): x² + (y−1)² < R², y < 1. Boundary parts: "Top" (the
+// flat edge y = 1, part id 0) and "Arc" (the lower half circle, curved, part id 1).
 
 #include <sc/mesh/Geometry.hpp>
 

@@ -27,14 +27,15 @@ public:
   /// Values of Mesh/Source.
   static const std::vector<std::string>& sources();
 
-  /// Validate `meshList` (a copy is checked and completed with defaults; errors name
-  /// 'Mesh/<key>'), check it against Problem/Dimension `dimension` (2 or 3), mesh the initial
-  /// domain, apply Mesh/Uniform refinements, and return the refiner holding the current mesh.
+  /// Validate `meshList` (a copy is checked and completed with defaults; errors name 'Mesh/<key>'),
+  /// check it against Problem/Dimension `dimension` (2 or 3), mesh the initial domain, apply
+  /// Mesh/Uniform refinements, and return the refiner holding the current mesh.
   /// splitBoundarySimplices: split initial elements with all vertices on the boundary at their
-  /// barycentre first (BoundarySimplexSplit.hpp; for 3D Taylor–Hood stability, DESIGN §2).
-  /// `limit` (ResourceEstimate.hpp; default: none): the initial mesh of a scene, the uniform
-  /// levels and the local sweeps are estimated first, and one that exceeds the limit is an
-  /// InputError naming the key, the estimate and the limit (before Gmsh or the refiner runs).
+  /// barycentre first (BoundarySimplexSplit.hpp; for 3D Taylor–Hood stability, docs/theory.md
+  /// §"Mixed formulation"). `limit` (ResourceEstimate.hpp; default: none): the initial mesh of a
+  /// scene, the uniform levels and the local sweeps are estimated first, and one that exceeds the
+  /// limit is an InputError naming the key, the estimate and the limit (before Gmsh or the refiner
+  /// runs).
   static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
                                               int dimension, bool splitBoundarySimplices = false,
                                               const ResourceLimit& limit = ResourceLimit());

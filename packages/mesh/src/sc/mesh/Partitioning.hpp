@@ -1,7 +1,7 @@
 #pragma once
-// Element partitioning for the replicated mesh (DESIGN §7, docs/mesh.md "Parallel model"): every
-// rank holds the whole SimplexMesh; METIS assigns each element an owner rank, and each rank
-// assembles its owned elements and reads the ghost layer around them.
+// Element partitioning for the replicated mesh (docs/theory.md §"Parallel model", docs/mesh.md
+// "Parallel model"): every rank holds the whole SimplexMesh; METIS assigns each element an owner
+// rank, and each rank assembles its owned elements and reads the ghost layer around them.
 
 #include <sc/mesh/SimplexMesh.hpp>
 

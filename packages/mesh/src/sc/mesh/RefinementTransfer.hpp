@@ -1,8 +1,8 @@
 #pragma once
 // Transfer of data from a mesh to its refinement with the history of one BisectionRefiner call
-// (DESIGN §5): vertex fields (P1 interpolation at the new midpoints), element fields (children
-// inherit the parent's value) and the parent of every boundary face (to carry contact active sets
-// and boundary data over).
+// (docs/theory.md §"Adaptivity"): vertex fields (P1 interpolation at the new midpoints), element
+// fields (children inherit the parent's value) and the parent of every boundary face (to carry
+// contact active sets and boundary data over).
 
 #include <sc/mesh/RefinementStep.hpp>
 #include <sc/mesh/SimplexMesh.hpp>

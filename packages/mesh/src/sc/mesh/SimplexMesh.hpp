@@ -4,7 +4,7 @@
 // Conventions (the discretisation relies on them, docs/mesh.md "Conventions"):
 // - Every element's vertices are ordered with positive signed measure (counter-clockwise
 //   triangles; tetrahedra with det[x1-x0, x2-x0, x3-x0] > 0). Intrepid2's orientation tools
-//   (DESIGN §2) take the element's vertex global ids in this order.
+//   (docs/theory.md §"Mixed formulation") take the element's vertex global ids in this order.
 // - Local face i of an element is the face opposite local vertex i (for tetrahedra: the vertices
 //   {0,1,2,3} \ {i} in increasing local order; for triangles: the edge {0,1,2} \ {i}).
 // - Intrepid2/shards numbering is available through sideFace() and elementEdges(): shards side s
@@ -31,12 +31,13 @@ namespace sc::mesh {
 class SimplexMesh {
 public:
   /// Build connectivity and geometric data and check the mesh. `origin` names where the mesh came
-  /// from (file name, scene) and is quoted in every error. Elements with negative signed measure are
-  /// reordered (two vertices swapped); degenerate elements, faces shared by more than two elements,
-  /// folded (overlapping) neighbours, hanging nodes on edges and tagged boundary faces that are not
-  /// on the boundary are sc::core::InputError. Boundary faces not listed get the part "Unnamed".
-  /// Optional `labels`: the numbers that errors should quote for vertices and elements (e.g. the
-  /// Gmsh node and element tags of a file), indexed like the vertices/elements given here.
+  /// from (file name, scene) and is quoted in every error. Elements with negative signed measure
+  /// are reordered (two vertices swapped); degenerate elements, faces shared by more than two
+  /// elements, folded (overlapping) neighbours, hanging nodes on edges and tagged boundary faces
+  /// that are not on the boundary are sc::core::InputError. Boundary faces not listed get the part
+  /// "Unnamed". Optional `labels`: the numbers that errors should quote for vertices and elements
+  /// (e.g. the Gmsh node and element tags of a file), indexed like the vertices/elements given
+  /// here.
   struct Labels {
     std::vector<std::size_t> vertex, element;
   };
@@ -117,8 +118,9 @@ public:
   std::vector<int> boundaryFacesOf(const std::string& name) const;
   /// True if vertex v lies on a boundary face.
   bool isBoundaryVertex(int v) const { return boundaryVertex_[v] != 0; }
-  /// Elements all of whose vertices are on the boundary (3D Taylor–Hood stability, DESIGN §2,
-  /// asks to avoid such tetrahedra; in 2D: triangles with three boundary vertices).
+  /// Elements all of whose vertices are on the boundary (3D Taylor–Hood stability, docs/theory.md
+  /// §"Mixed formulation", asks to avoid such tetrahedra; in 2D: triangles with three boundary
+  /// vertices).
   std::vector<int> elementsWithAllVerticesOnBoundary() const;
   /// Total measure (length/area) of one boundary part.
   double boundaryMeasure(const std::string& name) const;

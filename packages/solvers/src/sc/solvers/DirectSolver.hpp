@@ -1,7 +1,8 @@
 #pragma once
-// A sparse direct solver for the distributed saddle-point systems of DESIGN §2–§3, with
-// equilibration (DESIGN §3, "Replaced rows ... equilibrate") and reuse of the symbolic
-// factorisation across Newton steps (DESIGN §6, "Contact rows change every Newton step").
+// A sparse direct solver for the distributed saddle-point systems of docs/theory.md §"Mixed
+// formulation", §"Contact and friction", with equilibration (docs/theory.md §"Contact and
+// friction", "Replaced rows ... equilibrate") and reuse of the symbolic factorisation across Newton
+// steps (docs/theory.md §"Linear solvers", "Contact rows change every Newton step").
 //
 // Usage (the LinearSolver interface):
 //   auto solver = createDirectSolver(linearSolverList);   // LinearSolverFactory.hpp
@@ -38,7 +39,7 @@ public:
 
   /// Ordering and symbolic analysis of the current operator's graph, always redone. Not needed in
   /// a Newton loop: numericFactorization() and solve() analyse only when the graph changed, and
-  /// calling this every step throws the reuse away (DESIGN §6).
+  /// calling this every step throws the reuse away (docs/theory.md §"Linear solvers").
   void symbolicFactorization();
   /// Numerical factorisation; reuses the symbolic factorisation if it is still valid (same graph
   /// and symmetry), otherwise analyses first.

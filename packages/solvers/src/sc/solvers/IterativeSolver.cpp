@@ -1,5 +1,6 @@
-// Belos MINRES/GMRES with the block-diagonal preconditioner of DESIGN §6 (see the header). The
-// Belos, MueLu and TpetraExt templates stay in this translation unit (compile time).
+// Belos MINRES/GMRES with the block-diagonal preconditioner of docs/theory.md §"Linear solvers"
+// (see the header). The Belos, MueLu and TpetraExt templates stay in this translation unit (compile
+// time).
 
 #include <sc/solvers/IterativeSolver.hpp>
 
@@ -160,10 +161,10 @@ double maxOverRanks(const Teuchos::Comm<int>& comm, double v)
 
 }  // namespace
 
-// One symmetric V(1,1) cycle of geometric multigrid for S_σ (DESIGN §6): Galerkin coarse
-// operators A_{l−1} = P_lᵀ A_l P_l on the nested hierarchy, additive vertex-patch Schwarz smoother
-// B_l = Σ_i R_iᵀ A_{l,i}⁻¹ R_i (assembled as a CrsMatrix, patches solved exactly) damped by
-// 1/λ_max(B_l A_l), and a direct solve on the coarsest level.
+// One symmetric V(1,1) cycle of geometric multigrid for S_σ (docs/theory.md §"Linear solvers"):
+// Galerkin coarse operators A_{l−1} = P_lᵀ A_l P_l on the nested hierarchy, additive vertex-patch
+// Schwarz smoother B_l = Σ_i R_iᵀ A_{l,i}⁻¹ R_i (assembled as a CrsMatrix, patches solved exactly)
+// damped by 1/λ_max(B_l A_l), and a direct solve on the coarsest level.
 class StressMultigrid : public Operator {
 public:
   struct Level {
@@ -626,8 +627,8 @@ void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
   };
   int iterations = 0;
   double residual = relativeResidual();
-  // MINRES monitors the preconditioned residual (DESIGN §6): restart with a tighter tolerance
-  // until the true one is below the requested tolerance.
+  // MINRES monitors the preconditioned residual (docs/theory.md §"Linear solvers"): restart with a
+  // tighter tolerance until the true one is below the requested tolerance.
   double tol = options_.tolerance;
   for (int attempt = 0; residual > options_.tolerance && iterations < options_.maxIterations &&
                         attempt < 6;

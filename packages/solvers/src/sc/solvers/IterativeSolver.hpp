@@ -1,18 +1,19 @@
 #pragma once
-// Krylov solver for the 3×3 mixed system (DESIGN §6): Belos MINRES (symmetric operator, SPD
-// preconditioner) or GMRES (contact rows: non-symmetric), preconditioned by the block diagonal
+// Krylov solver for the 3×3 mixed system (docs/theory.md §"Linear solvers"): Belos MINRES
+// (symmetric operator, SPD preconditioner) or GMRES (contact rows: non-symmetric), preconditioned
+// by the block diagonal
 //
 //   P = diag(S_σ, 2μ M_u, 2μ M_θ),   S_σ = A + (2μ)⁻¹ B_uᵀ M_u⁻¹ B_u,
 //
 // taken from the operator actually solved: S_σ = K_σσ + K_σu (2μ M_u)⁻¹ K_uσ, so replaced contact
-// rows are in S_σ as DESIGN §6 asks (rebuilt at every setOperator). With the physical scaling D of
+// rows are in S_σ as docs/theory.md §"Linear solvers" asks (rebuilt at every setOperator). With the physical scaling D of
 // LinearSolver the blocks are formed in the scaled system (D P D). M_u⁻¹ is exact (element blocks
 // inverted); the θ block is diag(2μ M_θ). S_σ⁻¹ is applied by the "Stress block" sub-solver:
 //   - MUMPS or KLU2: exact (robust in h and λ; the cost of a direct solve of the σ block, which
 //     is SPD and smaller than the saddle-point system);
 //   - Multigrid: one symmetric V(1,1) cycle of geometric multigrid on the nested hierarchy of
 //     BlockStructure::multigrid (Galerkin coarse operators, additive vertex-patch Schwarz
-//     smoother, direct coarsest solve), DESIGN §6. 2D only;
+//     smoother, direct coarsest solve), docs/theory.md §"Linear solvers". 2D only;
 //   - MueLu: smoothed-aggregation AMG, one V-cycle. Not robust (the kernel of div): offered to
 //     measure that, docs/solvers.md.
 //

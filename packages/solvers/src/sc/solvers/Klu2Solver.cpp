@@ -151,7 +151,8 @@ void Klu2Solver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A)
 void Klu2Solver::doNumericFactorization(const Teuchos::RCP<const CrsMatrix>& A)
 {
   Impl& m = *impl_;
-  // New values, same graph (DirectSolver checked it): keep the symbolic phase (DESIGN §6).
+  // New values, same graph (DirectSolver checked it): keep the symbolic phase (docs/theory.md
+  // §"Linear solvers").
   m.gatherMatrix(*A);
   long long nnzLU = 0;
   onRoot(*m.comm, "numerical factorisation", [&] {

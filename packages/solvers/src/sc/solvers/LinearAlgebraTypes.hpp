@@ -1,6 +1,7 @@
 #pragma once
 // The Tpetra types of the solvers' public API, forward-declared so that headers stay cheap to
-// include (DESIGN §7: Scalar double, LO int, GO long long, Serial node = Tpetra's defaults).
+// include (docs/theory.md §"Parallel model": Scalar double, LO int, GO long long, Serial node =
+// Tpetra's defaults).
 
 #include <Tpetra_CrsMatrix_fwd.hpp>
 #include <Tpetra_Map_fwd.hpp>

@@ -1,7 +1,7 @@
 #pragma once
-// The one interface of every linear solver of StressContact (DESIGN §6): direct (KLU2, MUMPS) and
-// Krylov (Belos with a block preconditioner) solvers implement it, and callers (the elasticity
-// solve, the contact Newton loop, tests, benchmarks) see only it.
+// The one interface of every linear solver of StressContact (docs/theory.md §"Linear solvers"):
+// direct (KLU2, MUMPS) and Krylov (Belos with a block preconditioner) solvers implement it, and
+// callers (the elasticity solve, the contact Newton loop, tests, benchmarks) see only it.
 //
 // Usage:
 //   auto solver = createLinearSolver(linearSolverList);      // LinearSolverFactory.hpp
@@ -14,10 +14,11 @@
 //   solver->solve(b, x);
 //
 // Scaling: with D set, the solver works on D A D y = D b and returns x = D y. This is the only
-// place where the physical block scaling (√(2μ) on σ, 1/√(2μ) on u and θ, DESIGN §3) is applied;
-// callers hand over the unscaled operator. Symmetry: the caller states whether its operator is
-// symmetric (contact rows make it non-symmetric, DESIGN §3); the user's `Linear Solver/Symmetric`
-// says whether the solver may exploit it (MUMPS LDLᵀ, MINRES). Both must hold.
+// place where the physical block scaling (√(2μ) on σ, 1/√(2μ) on u and θ, docs/theory.md §"Contact
+// and friction") is applied; callers hand over the unscaled operator. Symmetry: the caller states
+// whether its operator is symmetric (contact rows make it non-symmetric, docs/theory.md §"Contact
+// and friction"); the user's `Linear Solver/Symmetric` says whether the solver may exploit it
+// (MUMPS LDLᵀ, MINRES). Both must hold.
 //
 // Every solve checks the relative residual ‖b̃ − Ã ỹ‖₂/‖b̃‖₂ of the working system (Ã = D A D,
 // b̃ = D b, the max over columns; Ã = A without scaling); a value above the limit or not finite
@@ -34,7 +35,8 @@
 
 namespace sc::solvers {
 
-/// One level of the nested mesh hierarchy for the multigrid of the stress block (DESIGN §6).
+/// One level of the nested mesh hierarchy for the multigrid of the stress block (docs/theory.md
+/// §"Linear solvers").
 struct MultigridLevel {
   /// Exact prolongation of σ from the next coarser level into this one (σ global ids 0..#σ of
   /// each level; row map = this level's owned σ DOFs in the order of the operator's row map on
@@ -44,13 +46,14 @@ struct MultigridLevel {
   std::vector<std::vector<long long>> patches;
 };
 
-/// The 3×3 field layout of the mixed system (DESIGN §2): monolithic global ids [0, σ) are stress,
-/// [σ, σ + u) displacement, the rest rotation; and what block preconditioners need besides the
-/// operator. Direct solvers ignore it.
+/// The 3×3 field layout of the mixed system (docs/theory.md §"Mixed formulation"): monolithic
+/// global ids [0, σ) are stress, [σ, σ + u) displacement, the rest rotation; and what block
+/// preconditioners need besides the operator. Direct solvers ignore it.
 struct BlockStructure {
   long long stressDofs = 0, displacementDofs = 0, rotationDofs = 0;
   int dimension = 0;  ///< 2 or 3
-  /// 2μ of the material (the preconditioner's u and θ blocks are 2μ M_u, 2μ M_θ, DESIGN §6).
+  /// 2μ of the material (the preconditioner's u and θ blocks are 2μ M_u, 2μ M_θ, docs/theory.md
+  /// §"Linear solvers").
   double twoMu = 1.0;
   /// The L² mass matrices of u and θ in one matrix on the operator's row map (σ rows empty or
   /// zero), unscaled. M_u must be element-block diagonal (discontinuous displacements).

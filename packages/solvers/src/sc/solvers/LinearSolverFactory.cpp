@@ -81,7 +81,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
     using namespace sc::core;
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
     declareChoice(*pl, "Type", "MUMPS", knownTypes(),
-                  "Solver for the saddle-point system (DESIGN §6): KLU2 (Amesos2; gathers the "
+                  "Solver for the saddle-point system (docs/theory.md §\"Linear solvers\"): KLU2 (Amesos2; gathers the "
                   "matrix on rank 0, serial LU), MUMPS (parallel multifrontal LU/LDLᵀ) or "
                   "Iterative (Belos MINRES/GMRES with the block-diagonal preconditioner, see the "
                   "Iterative sublist; docs/solvers.md).");
@@ -89,12 +89,12 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                 "Exploit symmetry when the system is symmetric (elasticity without contact rows; "
                 "the application knows which systems are): MUMPS factorises LDLᵀ (SYM = 2), about "
                 "half the work and memory, and Iterative uses MINRES. false: always LU / GMRES. "
-                "Systems with contact rows are non-symmetric (DESIGN §3) and always use LU / "
+                "Systems with contact rows are non-symmetric (docs/theory.md §\"Contact and friction\") and always use LU / "
                 "GMRES. KLU2 ignores it.");
     declareBool(*pl, "Equilibrate", true,
                 "Scale rows and columns (Ruiz, powers of two; symmetric if Symmetric = true) before "
                 "factorising: the stress, displacement and rotation blocks differ by orders of "
-                "magnitude (DESIGN §3).");
+                "magnitude (docs/theory.md §\"Contact and friction\").");
     declareInt(*pl, "Equilibration iterations", 20,
                "Maximum Ruiz sweeps; they stop earlier when every row and column ∞-norm is within "
                "0.1 of 1.",
@@ -125,7 +125,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                "Print Belos' residual every this many iterations (0: never).", 0, 1000000);
     declareChoice(il, "Stress block", "MUMPS", IterativeSolver::stressBlockSolvers(),
                   "Solver of the stress block S_σ = A + (2μ)⁻¹B_uᵀM_u⁻¹B_u of the block-diagonal "
-                  "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (DESIGN §6): MUMPS or KLU2 (exact: "
+                  "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §\"Linear solvers\"): MUMPS or KLU2 (exact: "
                   "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
                   "block); Multigrid (one geometric V-cycle with vertex-patch smoothers on the "
                   "nested hierarchy; 2D, C++ API only: the application does not keep the "

@@ -1,7 +1,7 @@
 #pragma once
-// Owner of the "Linear Solver" sublist (DESIGN §6, §8): its valid parameters and the solvers it
-// names (direct: KLU2, MUMPS; Krylov: Iterative). Types are registered by name; an unknown type is an InputError listing the
-// known ones (STYLE.md, Trilinos anchor).
+// Owner of the "Linear Solver" sublist (docs/theory.md §"Linear solvers", §8): its valid parameters
+// and the solvers it names (direct: KLU2, MUMPS; Krylov: Iterative). Types are registered by name;
+// an unknown type is an InputError listing the known ones (STYLE.md, Trilinos anchor).
 
 #include <string>
 #include <vector>

@@ -190,7 +190,7 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
   id.ICNTL(20) = 0;  // dense centralised right-hand side
   id.ICNTL(21) = 0;  // centralised solution
   // Sequential analysis on the gathered graph: the ordering, hence the factors, do not depend on
-  // the number of ranks (results agree across rank counts, DESIGN §7).
+  // the number of ranks (results agree across rank counts, docs/theory.md §"Parallel model").
   id.ICNTL(28) = 1;
 
   // --- local entries with 1-based global indices

@@ -1,9 +1,9 @@
 #pragma once
 // Ruiz's iterative equilibration (D. Ruiz, "A scaling algorithm to equilibrate both rows and
 // columns norms in matrices", RAL-TR-2001-034): repeatedly divide row i by sqrt(‖row i‖_∞) and
-// column j by sqrt(‖column j‖_∞) until all norms are close to 1. DESIGN §3: the stress, displacement
-// and rotation blocks differ in scale by orders of magnitude (compliance ~ 1/E); the unscaled system
-// failed in MUMPS in the prototype.
+// column j by sqrt(‖column j‖_∞) until all norms are close to 1. docs/theory.md §"Contact and
+// friction": the stress, displacement and rotation blocks differ in scale by orders of magnitude
+// (compliance ~ 1/E); the unscaled system failed in MUMPS in the prototype.
 //
 // The factors are rounded to powers of two at the end, so D_r A D_c, D_r b and D_c y are exact in
 // floating point: equilibration changes the pivots seen by the factorisation, never the data. Only
