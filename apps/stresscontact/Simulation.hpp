@@ -103,7 +103,7 @@ private:
   /// The next mesh's DOFs and bytes against the memory limit (estimated from the marked
   /// elements and the current DOFs per element); no limit when none is active.
   adapt::NextMeshForecast forecastNextMesh(const adapt::Marking& marking) const override;
-  /// Fields (XDMF), the cycle's summary record, its cost, summary.json.
+  /// The contact CSV, the fields (XDMF), the cycle's summary record and cost, summary.json.
   void output(int cycle, const adapt::Marking& marking, const std::string& stopReason) override;
   /// checkpoint.h5, timed into summary.json's "checkpoint" phase.
   void checkpoint(int cycle, const adapt::Marking& marking) override;
