@@ -50,16 +50,36 @@ RUNS = {
 }
 
 
-def run(name):
-    deck, sets, nu = RUNS[name]
-    out = os.path.join(OUT, name)
+def run_deck(deck, sets, out):
+    """Run input/<deck> with the --set overrides into `out`: its summary.json and the seconds."""
     cmd = [APP, os.path.join(ROOT, "input", deck), "--quiet", "--output", out]
-    for s in GEOMETRY + sets:
+    for s in sets:
         cmd += ["--set", s]
     t0 = time.time()
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     seconds = time.time() - t0
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f), seconds
+
+
+def write_csv(name, header, rows):
+    with open(os.path.join(HERE, name + ".csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
+
+
+def load_csv(name):
+    """The header and the rows (as numbers; an empty cell is 0) of docs/adaptivity/<name>.csv."""
+    with open(os.path.join(HERE, name + ".csv")) as f:
+        r = list(csv.reader(f))
+    return r[0], [[float(x) if x != "" else 0.0 for x in row] for row in r[1:]]
+
+
+def run(name):
+    deck, sets, nu = RUNS[name]
+    out = os.path.join(OUT, name)
+    summary, seconds = run_deck(deck, GEOMETRY + sets, out)
     rows = []
     for c in summary["cycles"]:
         eta = c.get("eta", {})
@@ -75,16 +95,14 @@ def run(name):
     header = ["cycle", "dofs", "eta"] + PARTS + ["contact_normal_signed", "P", "a", "p0", "a_hertz",
                                                  "p0_hertz", "stick_half_width", "newton_steps",
                                                  "cycle_seconds"]
-    with open(os.path.join(HERE, name + ".csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(header)
-        w.writerows(rows)
+    write_csv(name, header, rows)
     print("%-32s %3d cycles, %8d DOFs, eta %.3e, %.1f s" % (name, len(rows) - 1, rows[-1][1],
                                                             rows[-1][2], seconds), flush=True)
     return out
 
 
 def rate(rows, last):
+    """Least-squares slope of −log η against log DOFs over the last `last` rows (columns 1, 2)."""
     xs = [math.log(r[1]) for r in rows[-last:]]
     ys = [math.log(r[2]) for r in rows[-last:]]
     mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
@@ -100,11 +118,6 @@ def plots(outs):
         print("python3-matplotlib is not installed: CSV only (apt-get install python3-matplotlib)")
         return
 
-    def load(name):
-        with open(os.path.join(HERE, name + ".csv")) as f:
-            r = list(csv.reader(f))
-        return r[0], [[float(x) if x != "" else 0.0 for x in row] for row in r[1:]]
-
     # 1. eta_CF against DOFs, uniform vs adaptive, per nu (the talk's "Convergence comparison").
     for tag, title in (("frictionless_nu028", "ν = 0.28, frictionless"),
                        ("frictionless_nu04999", "ν = 0.4999, frictionless"),
@@ -115,14 +128,14 @@ def plots(outs):
             name = tag + "_" + kind
             if not os.path.exists(os.path.join(HERE, name + ".csv")):
                 continue
-            h, rows = load(name)
+            h, rows = load_csv(name)
             ax.loglog([r[1] for r in rows], [r[2] for r in rows], style, label="η_CF, " + kind, ms=4)
             if kind == "adaptive":
                 for p, st in (("volume", ":"), ("contact_complementarity", "-."), ("friction", "--")):
                     i = h.index(p)
                     if any(r[i] > 0 for r in rows):
                         ax.loglog([r[1] for r in rows], [r[i] for r in rows], st, label=p + " (adaptive)", lw=1)
-        h, rows = load(tag + "_adaptive")
+        h, rows = load_csv(tag + "_adaptive")
         n0 = rows[-1][1]
         ax.loglog([n0 / 30, n0], [rows[-1][2] * 30, rows[-1][2]], "k-", lw=0.8, label="DOFs⁻¹")
         ax.set_xlabel("DOFs")
@@ -148,7 +161,7 @@ def plots(outs):
     axs[0].set_xlabel("x on Γ_C (half)")
     axs[0].legend(fontsize=8)
     axs[0].set_title("contact points on half of Γ_C (DOF points of the arc faces)")
-    h, rows = load("frictionless_nu028_adaptive")
+    h, rows = load_csv("frictionless_nu028_adaptive")
     last = int(rows[-1][0])
     pts = [r for r in csv.DictReader(open(os.path.join(out, "contact_cycle%d.csv" % last)))]
     P = rows[-1][h.index("P")]
@@ -167,7 +180,7 @@ def plots(outs):
 
     # 3. Coulomb: normal and tangential traction along Γ_C at the last cycle.
     out = outs["coulomb_nu028_adaptive"]
-    h, rows = load("coulomb_nu028_adaptive")
+    h, rows = load_csv("coulomb_nu028_adaptive")
     last = int(rows[-1][0])
     pts = [r for r in csv.DictReader(open(os.path.join(out, "contact_cycle%d.csv" % last)))]
     a = rows[-1][h.index("a")]
@@ -226,8 +239,7 @@ def main():
         sys.exit("build the application first: " + APP)
     outs = {name: run(name) for name in RUNS}
     for name in RUNS:
-        with open(os.path.join(HERE, name + ".csv")) as f:
-            rows = [[float(x) if x != "" else 0.0 for x in row] for row in list(csv.reader(f))[1:]]
+        rows = load_csv(name)[1]
         print("%-32s rate of eta over the last %d cycles: %.2f" % (name, min(10, len(rows) - 1),
                                                                    rate(rows, min(10, len(rows) - 1))))
     plots(outs)

@@ -15,19 +15,14 @@ Usage (repository root, after building):  /usr/bin/python3 docs/adaptivity/hertz
 Both runs together take about 15 minutes on one core.
 """
 import csv
-import json
 import math
 import os
-import subprocess
 import sys
-import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-APP = os.path.join(ROOT, "build", "apps", "stresscontact", "stresscontact")
-HERE = os.path.join(ROOT, "docs", "adaptivity")
+# The runner, the CSV helpers and the rate fit of the 2D study (same directory).
+from hertz2d_study import APP, HERE, PARTS, load_csv, rate, run_deck, write_csv
+
 OUT = "/tmp/sc_adaptivity_study3d"
-PARTS = ["volume", "asymmetry", "oscillation", "contact_complementarity", "contact_penetration",
-         "contact_tension", "friction"]
 E, NU, MU = 2.5, 0.25, 0.4
 RUNS = {
     "hertz3d_coulomb_adaptive": "hertz3d.xml",
@@ -46,13 +41,7 @@ def sphere(P):
 
 def run(name):
     out = os.path.join(OUT, name)
-    cmd = [APP, os.path.join(ROOT, "input", RUNS[name]), "--quiet", "--output", out]
-    for s in SETS:
-        cmd += ["--set", s]
-    t0 = time.time()
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    seconds = time.time() - t0
-    summary = json.load(open(os.path.join(out, "summary.json")))
+    summary, seconds = run_deck(RUNS[name], SETS, out)
     rows = []
     for c in summary["cycles"]:
         eta = c.get("eta", {})
@@ -68,10 +57,7 @@ def run(name):
                                                  "p0_hertz", "stick_radius_from_area",
                                                  "stick_points", "slip_points", "newton_steps",
                                                  "cycle_seconds"]
-    with open(os.path.join(HERE, name + ".csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(header)
-        w.writerows(rows)
+    write_csv(name, header, rows)
     last = rows[-1]
     print("%-30s %2d cycles, %7d DOFs, eta %.3e, radius/Hertz %.3f, p0/Hertz %.3f, %.0f s"
           % (name, len(rows) - 1, last[1], last[2], last[11] / last[13], last[12] / last[14],
@@ -85,13 +71,6 @@ def contact_points(out, cycle):
                 for r in csv.DictReader(f)]
 
 
-def rate(xs, ys):
-    lx = [math.log(x) for x in xs]
-    ly = [math.log(y) for y in ys]
-    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
-    return -sum((x - mx) * (y - my) for x, y in zip(lx, ly)) / sum((x - mx) ** 2 for x in lx)
-
-
 def plots(outs):
     try:
         import matplotlib
@@ -102,23 +81,17 @@ def plots(outs):
         print("python3-matplotlib is not installed: CSV only (apt-get install python3-matplotlib)")
         return
 
-    def load(name):
-        with open(os.path.join(HERE, name + ".csv")) as f:
-            r = list(csv.reader(f))
-        return r[0], [[float(x) for x in row] for row in r[1:]]
-
     # 1. eta_CF and its main parts against DOFs.
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for name, label, style in (("hertz3d_coulomb_adaptive", "Coulomb μ_F = 0.4", "o-"),
                                ("hertz3d_frictionless_adaptive", "frictionless", "s--")):
-        h, rows = load(name)
+        h, rows = load_csv(name)
         dofs = [r[1] for r in rows]
         ax.loglog(dofs, [r[2] for r in rows], style, ms=4, label="η_CF, " + label)
         if name == "hertz3d_coulomb_adaptive":
             for part, st in (("volume", ":"), ("contact_complementarity", "-."), ("friction", "--")):
                 ax.loglog(dofs, [r[h.index(part)] for r in rows], st, lw=1, label=part)
-            print("Coulomb: eta rate in DOFs over the last 5 cycles %.2f" %
-                  rate(dofs[-5:], [r[2] for r in rows][-5:]))
+            print("Coulomb: eta rate in DOFs over the last 5 cycles %.2f" % rate(rows, 5))
     x0, y0 = dofs[0], rows[0][2]
     ax.loglog([x0, dofs[-1]], [y0, y0 * (dofs[-1] / x0) ** (-2.0 / 3.0)], "k:", lw=0.8,
               label="DOFs^(-2/3) (optimal, k = 1)")
@@ -136,7 +109,7 @@ def plots(outs):
     out_f, last_f = outs["hertz3d_frictionless_adaptive"]
     pc = contact_points(out_c, last_c)
     pf = contact_points(out_f, last_f)
-    hf, rows_f = load("hertz3d_frictionless_adaptive")
+    hf, rows_f = load_csv("hertz3d_frictionless_adaptive")
     P = rows_f[-1][hf.index("P")]
     aH, p0H = sphere(P)
     near = [p for p in pc if math.hypot(p["x"], p["y"]) < 1.6 * aH]
