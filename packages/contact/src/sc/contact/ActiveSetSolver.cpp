@@ -528,13 +528,7 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
   const bool friction = settings_.needsFriction();
   const bool tresca = settings_.frictionLaw == FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
-  Teuchos::RCP<CrsMatrix> A;
-  if (!reuse.is_null() && reuse->getCrsGraph().get() == K.getCrsGraph().get()) {
-    A = reuse;  // the same graph: overwrite the values, no allocation
-    Kokkos::deep_copy(A->getLocalMatrixHost().values, K.getLocalMatrixHost().values);
-  } else {
-    A = Teuchos::rcp(new CrsMatrix(K, Teuchos::Copy));
-  }
+  auto A = solvers::copyMatrixValues(K, reuse);
   A->resumeFill();
   rhs.assign(b);
   auto rhsData = rhs.getDataNonConst(0);

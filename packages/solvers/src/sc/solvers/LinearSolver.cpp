@@ -14,6 +14,16 @@
 
 namespace sc::solvers {
 
+Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source, const Teuchos::RCP<CrsMatrix>& reuse)
+{
+  SC_THROW_IF(reuse.get() == &source, sc::core::InternalError,
+              "copyMatrixValues: the target is the source");
+  if (reuse.is_null() || reuse->getCrsGraph().get() != source.getCrsGraph().get())
+    return Teuchos::rcp(new CrsMatrix(source, Teuchos::Copy));
+  Kokkos::deep_copy(reuse->getLocalMatrixHost().values, source.getLocalMatrixHost().values);
+  return reuse;
+}
+
 LinearSolver::LinearSolver() = default;
 LinearSolver::~LinearSolver() = default;
 
@@ -37,14 +47,7 @@ void LinearSolver::setOperator(const Teuchos::RCP<const CrsMatrix>& A, bool symm
   } else {
     SC_THROW_IF(!D_->getMap()->isSameAs(*A->getRowMap()), sc::core::InternalError,
                 name() << " solver: the scaling vector's map differs from the operator's row map");
-    Teuchos::RCP<CrsMatrix> S;
-    if (!isIterative() && !scaledWorking_.is_null() && scaledWorking_.get() != A.get() &&
-        scaledWorking_->getCrsGraph().get() == A->getCrsGraph().get()) {
-      S = scaledWorking_;
-      Kokkos::deep_copy(S->getLocalMatrixHost().values, A->getLocalMatrixHost().values);
-    } else {
-      S = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
-    }
+    auto S = copyMatrixValues(*A, scaledWorking_.get() != A.get() ? scaledWorking_ : Teuchos::null);
     scaledWorking_ = isIterative() ? Teuchos::null : S;
     S->leftScale(*D_);
     S->rightScale(*D_);

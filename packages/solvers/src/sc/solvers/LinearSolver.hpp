@@ -137,4 +137,9 @@ private:
   double maxRelativeResidual_ = 1e-6;
 };
 
+/// A copy of `source`'s values on its graph: written into `reuse` when that matrix shares the
+/// graph (no allocation: the Newton steps of a contact solve change values, not the graph),
+/// otherwise a new copy. `reuse` may be null; it must not be `source` itself.
+Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source, const Teuchos::RCP<CrsMatrix>& reuse);
+
 }  // namespace sc::solvers
