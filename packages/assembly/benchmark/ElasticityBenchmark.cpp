@@ -2,7 +2,7 @@
 // elasticity system (issue #4). Prints one line per size and solver; numbers in docs/benchmarks.md.
 //
 //   elasticity_benchmark [--dim=2|3] [--max-dofs=N] [--degree=k] [--solvers=KLU2,MUMPS,Iterative]
-//                        [--mesh-size=h] [--nu=ν] [--min-dofs=N]
+//                        [--mesh-size=h] [--nu=ν] [--min-dofs=N] [--stress-block=MUMPS|Multigrid|...]
 //   mpiexec -n 2 elasticity_benchmark --dim=3 --max-dofs=600000 --mesh-size=0.4
 //
 // Sizes: the initial Gmsh mesh of the unit square/cube (element size h, default 0.25 in 2D and
@@ -32,6 +32,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/MixedElasticitySystem.hpp>
+#include <sc/assembly/Multigrid.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
@@ -74,6 +75,7 @@ int main(int argc, char* argv[])
   double nu = 0.3;
   long long minDofs = 0;
   std::vector<std::string> solvers = {"KLU2", "MUMPS"};
+  std::string stressBlock = "MUMPS";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a.rfind("--dim=", 0) == 0)
@@ -88,6 +90,8 @@ int main(int argc, char* argv[])
       nu = std::stod(a.substr(5));
     else if (a.rfind("--min-dofs=", 0) == 0)
       minDofs = std::stoll(a.substr(11));
+    else if (a.rfind("--stress-block=", 0) == 0)
+      stressBlock = a.substr(15);
     else if (a.rfind("--solvers=", 0) == 0) {
       solvers.clear();
       std::string list = a.substr(10), item;
@@ -118,15 +122,21 @@ int main(int argc, char* argv[])
   if (comm->getRank() == 0) {
     std::string solverList;
     for (const auto& t : solvers) solverList += (solverList.empty() ? "" : ",") + t;
-    std::printf("# elasticity_benchmark %dD k=%d nu=%g ranks=%d mesh-size=%g max-dofs=%lld solvers=%s\n"
+    std::printf("# elasticity_benchmark %dD k=%d nu=%g ranks=%d mesh-size=%g max-dofs=%lld solvers=%s "
+                "stress-block=%s\n"
                 "# times: max over ranks [s]; rates: global count / time / ranks; peakMB: RSS "
                 "high-water mark, max and sum over ranks\n",
-                dim, degree, nu, nRanks, meshSize, maxDofs, solverList.c_str());
+                dim, degree, nu, nRanks, meshSize, maxDofs, solverList.c_str(), stressBlock.c_str());
     std::printf("# %9s %8s %8s %8s %8s %10s %10s %-9s %8s %8s %8s %9s %8s %8s %6s\n", "dofs",
                 "elements", "setup_s", "number_s", "assem_s", "dofs/s/rk", "elem/s/rk", "solver",
                 "analyse", "factor", "solve", "residual", "peakMB", "sumMB", "iters");
     std::fflush(stdout);
   }
+  // Stress block = Multigrid: the nested hierarchy (coarsest first), extended at every refinement.
+  const bool multigrid = stressBlock == "Multigrid";
+  std::vector<sc::solvers::MultigridLevel> hierarchy;
+  Teuchos::RCP<const sc::disc::MixedElasticitySpace> previous;
+  std::vector<int> parent;  // fine element -> coarse element of the last refinement
   while (true) {
     auto m = refiner->mesh();
     comm->barrier();
@@ -137,8 +147,16 @@ int main(int argc, char* argv[])
     const auto& space = system.space();
     if (space.numGlobalDofs() > maxDofs)
       break;
-    if (space.numGlobalDofs() < minDofs) {
-      refiner->refineUniformly();
+    if (multigrid) {
+      if (previous.is_null())
+        hierarchy.push_back({});
+      else
+        hierarchy.push_back({sc::assembly::stressProlongation(*previous, space, parent, comm),
+                             sc::assembly::stressPatches(space)});
+      previous = system.spacePtr();
+    }
+    if (space.numGlobalDofs() < minDofs || (multigrid && hierarchy.size() < 2)) {
+      parent = refiner->refineUniformly().elementParent;
       continue;
     }
     const double tSpace = Teuchos::Time::wallTime();
@@ -157,9 +175,12 @@ int main(int argc, char* argv[])
     for (const auto& type : solvers) {
       Teuchos::ParameterList sl;
       sl.set("Type", type);
+      if (type == "Iterative")
+        sl.sublist("Iterative").set("Stress block", stressBlock);
       auto solver = sc::solvers::createLinearSolver(sl);
       auto x = assembler.createVector();
-      system.prepareSolver(*solver);  // scaling and (Krylov) block structure, as the application
+      // scaling and (Krylov) block structure, as the application
+      system.prepareSolver(*solver, type == "Iterative" ? hierarchy : std::vector<sc::solvers::MultigridLevel>{});
       comm->barrier();
       const double tOp = Teuchos::Time::wallTime();
       solver->setOperator(assembler.matrix(), true);
@@ -181,7 +202,7 @@ int main(int argc, char* argv[])
                     st.relativeResidual, peakMax, peakSum, st.iterations);
       std::fflush(stdout);
     }
-    refiner->refineUniformly();
+    parent = refiner->refineUniformly().elementParent;
   }
   return 0;
 }

@@ -49,7 +49,7 @@ struct VerificationSetup {
   std::string solver = "KLU2";  ///< Linear Solver/Type: KLU2, MUMPS, Iterative
   /// Extra entries of the "Linear Solver" list (e.g. the Iterative sublist).
   Teuchos::ParameterList solverOptions;
-  /// Keep the nested hierarchy (prolongations, vertex patches) for Stress block = Multigrid: the
+  /// Keep the nested hierarchy (prolongations, smoother patches) for Stress block = Multigrid: the
   /// initial mesh is the coarsest level and level 0 is its first uniform refinement.
   bool multigrid = false;
   /// false: level l is the previous level refined uniformly (bisection); true: level l is a new
@@ -135,7 +135,7 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
     const auto& space = system->space();
     if (s.multigrid) {
       hierarchy.push_back({assembly::stressProlongation(*previous, space, step->elementParent, comm),
-                           assembly::stressVertexPatches(space)});
+                           assembly::stressPatches(space)});
       previous = system->spacePtr();
     }
     assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};

@@ -1,9 +1,10 @@
-// Prolongation and vertex patches for the multigrid of the stress block (see the header).
+// Prolongation and smoother patches for the multigrid of the stress block (see the header).
 
 #include <sc/assembly/Multigrid.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <Teuchos_LAPACK.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -118,46 +119,61 @@ Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coa
   return P;
 }
 
-std::vector<std::vector<long long>> stressVertexPatches(const disc::MixedElasticitySpace& space)
+std::vector<std::vector<long long>> stressPatches(const disc::MixedElasticitySpace& space)
 {
   const auto& m = space.mesh();
   const int d = space.dim(), nRT = space.stressBasisSize();
-  const int nv = m.numVertices(), ne = m.numElements();
-  // vertex -> elements around it
-  std::vector<int> count(nv + 1, 0);
-  for (int e = 0; e < ne; ++e)
-    for (int j = 0; j <= d; ++j)
-      ++count[m.elementVertices(e)[j] + 1];
-  for (int v = 0; v < nv; ++v)
-    count[v + 1] += count[v];
-  std::vector<int> star(count[nv]), fill(count.begin(), count.end() - 1);
-  for (int e = 0; e < ne; ++e)
-    for (int j = 0; j <= d; ++j)
-      star[fill[m.elementVertices(e)[j]]++] = e;
+  const int ne = m.numElements();
+  // The patch entities: vertices in 2D (one local vertex), edges in 3D (two local vertices), as
+  // (key, element, local vertex mask) sorted by key, so that each entity's star is one run.
+  struct Incidence {
+    std::uint64_t key;
+    int element;
+    unsigned mask;  // bit j: local vertex j belongs to the entity
+  };
+  std::vector<Incidence> inc;
+  inc.reserve(static_cast<std::size_t>(ne) * (d == 2 ? 3 : 6));
+  for (int e = 0; e < ne; ++e) {
+    const int* ev = m.elementVertices(e);
+    if (d == 2) {
+      for (int j = 0; j < 3; ++j)
+        inc.push_back({static_cast<std::uint64_t>(ev[j]), e, 1u << j});
+    } else {
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          const auto lo = static_cast<std::uint64_t>(std::min(ev[i], ev[j]));
+          const auto hi = static_cast<std::uint64_t>(std::max(ev[i], ev[j]));
+          inc.push_back({(lo << 32) | hi, e, (1u << i) | (1u << j)});
+        }
+    }
+  }
+  std::sort(inc.begin(), inc.end(), [](const Incidence& x, const Incidence& y) {
+    return x.key != y.key ? x.key < y.key : x.element < y.element;
+  });
   // local RT DOFs on some face (the others are interior)
   std::vector<char> onFace(nRT, 0);
   for (int lf = 0; lf <= d; ++lf)
     for (int a : space.stressFaceLocalDofs(lf))
       onFace[a] = 1;
   std::vector<std::vector<long long>> patches;
-  for (int v = 0; v < nv; ++v) {
-    if (count[v] == count[v + 1])
-      continue;
-    const int first = *std::min_element(star.begin() + count[v], star.begin() + count[v + 1]);
-    if (elementOwner(space, first) != space.rank())
+  for (std::size_t begin = 0, end = 0; begin < inc.size(); begin = end) {
+    end = begin;
+    while (end < inc.size() && inc[end].key == inc[begin].key)
+      ++end;
+    // the owner of the lowest-numbered element of the star smooths it (sorted by element)
+    if (elementOwner(space, inc[begin].element) != space.rank())
       continue;
     std::vector<long long> p;
-    for (int s = count[v]; s < count[v + 1]; ++s) {
-      const int e = star[s];
-      const int* ev = m.elementVertices(e);
-      const int local = static_cast<int>(std::find(ev, ev + d + 1, v) - ev);
-      const long long* ed = space.elementDofs(e);
+    for (std::size_t s = begin; s < end; ++s) {
+      const long long* ed = space.elementDofs(inc[s].element);
       for (int i = 0; i < d; ++i) {
         for (int a = 0; a < nRT; ++a)
           if (!onFace[a])
             p.push_back(ed[space.stressOffset(i) + a]);
+        // face lf is opposite local vertex lf: it contains the entity iff lf is not one of its
+        // vertices
         for (int lf = 0; lf <= d; ++lf)
-          if (lf != local)  // face lf is opposite local vertex lf: it contains v otherwise
+          if (!(inc[s].mask & (1u << lf)))
             for (int a : space.stressFaceLocalDofs(lf))
               p.push_back(ed[space.stressOffset(i) + a]);
       }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <BelosLinearProblem.hpp>
@@ -14,6 +15,7 @@
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_BLAS.hpp>
 #include <Teuchos_LAPACK.hpp>
 #include <Teuchos_Time.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
@@ -161,20 +163,157 @@ double maxOverRanks(const Teuchos::Comm<int>& comm, double v)
 
 }  // namespace
 
-// One symmetric V(1,1) cycle of geometric multigrid for S_σ (docs/theory.md §"Linear solvers"):
-// Galerkin coarse operators A_{l−1} = P_lᵀ A_l P_l on the nested hierarchy, additive vertex-patch
-// Schwarz smoother B_l = Σ_i R_iᵀ A_{l,i}⁻¹ R_i (assembled as a CrsMatrix, patches solved exactly)
-// damped by 1/λ_max(B_l A_l), and a direct solve on the coarsest level.
+namespace {
+
+// The additive Schwarz smoother B = Σ_i R_iᵀ A_i⁻¹ R_i over the patches (σ global ids) of this
+// rank, applied matrix-free: each patch block A_i is factorised once by LAPACK in double
+// (Cholesky when symmetric, LU with partial pivoting otherwise) and the factors are kept in
+// single precision (a preconditioner needs no more; it halves the largest memory item);
+// apply() imports the residual onto the union of this rank's patches (rows of patches cut by the
+// partition come from the other ranks), solves with each patch's factors and exports (adds) the
+// corrections to their owners. Memory: Σ_i m_i² floats. (Assembling B as a sparse matrix took
+// more than 5 GB at 262k 3D DOFs with vertex stars.)
+class PatchSmoother {
+public:
+  PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<long long>>& patches,
+                bool symmetric)
+    : rowMap_(A.getRowMap()), symmetric_(symmetric)
+  {
+    std::vector<GO> ov;
+    for (const auto& p : patches)
+      ov.insert(ov.end(), p.begin(), p.end());
+    std::sort(ov.begin(), ov.end());
+    ov.erase(std::unique(ov.begin(), ov.end()), ov.end());
+    const auto inv = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+    overlapMap_ = Teuchos::rcp(new Map(inv, Teuchos::ArrayView<const GO>(ov), 0, A.getComm()));
+    import_ = Teuchos::rcp(new Tpetra::Import<>(A.getRowMap(), overlapMap_));
+    export_ = Teuchos::rcp(new Tpetra::Export<>(overlapMap_, A.getRowMap()));
+    CrsMatrix Aov(overlapMap_, 0);
+    Aov.doImport(A, *import_, Tpetra::INSERT);
+    Aov.fillComplete(A.getDomainMap(), A.getRangeMap());
+    const auto& colMap = *Aov.getColMap();
+    std::size_t total = 0, lids = 0;
+    for (const auto& p : patches) {
+      total += p.size() * p.size();
+      lids += p.size();
+    }
+    factors_.reserve(total);
+    lids_.reserve(lids);
+    if (!symmetric)
+      pivots_.reserve(lids);
+    Teuchos::LAPACK<int, double> lapack;
+    std::vector<double> dense;
+    std::vector<int> ipiv;
+    // position in the current patch of each column of Aov (−1: not in the patch)
+    std::vector<int> position(colMap.getNodeNumElements(), -1);
+    for (const auto& p : patches) {
+      const int m = static_cast<int>(p.size());
+      if (m == 0)
+        continue;
+      sizes_.push_back(m);
+      for (int a = 0; a < m; ++a) {
+        lids_.push_back(overlapMap_->getLocalElement(p[a]));
+        const LO c = colMap.getLocalElement(p[a]);
+        if (c != Teuchos::OrdinalTraits<LO>::invalid())
+          position[c] = a;
+      }
+      dense.assign(static_cast<std::size_t>(m) * m, 0.0);
+      for (int a = 0; a < m; ++a) {
+        typename CrsMatrix::local_inds_host_view_type inds;
+        typename CrsMatrix::values_host_view_type v;
+        Aov.getLocalRowView(lids_[lids_.size() - m + a], inds, v);
+        for (size_t k = 0; k < inds.extent(0); ++k)
+          if (position[inds(k)] >= 0)
+            dense[static_cast<std::size_t>(position[inds(k)]) * m + a] = v(k);  // column-major
+      }
+      for (int a = 0; a < m; ++a) {
+        const LO c = colMap.getLocalElement(p[a]);
+        if (c != Teuchos::OrdinalTraits<LO>::invalid())
+          position[c] = -1;
+      }
+      int info = 0;
+      if (symmetric) {
+        lapack.POTRF('L', m, dense.data(), m, &info);
+        SC_THROW_IF(info != 0, sc::core::ConvergenceError,
+                    "stress multigrid: a patch block is not positive definite (LAPACK potrf "
+                    "info " << info << ")");
+      } else {
+        ipiv.resize(m);
+        lapack.GETRF(m, m, dense.data(), m, ipiv.data(), &info);
+        SC_THROW_IF(info != 0, sc::core::ConvergenceError,
+                    "stress multigrid: a patch block is singular (LAPACK getrf info " << info
+                                                                                     << ")");
+        pivots_.insert(pivots_.end(), ipiv.begin(), ipiv.end());
+      }
+      factors_.insert(factors_.end(), dense.begin(), dense.end());  // rounded to float
+    }
+  }
+
+  /// z ← β z + ω B r.
+  void apply(const MultiVector& r, MultiVector& z, double omega, double beta) const
+  {
+    const size_t nv = r.getNumVectors();
+    MultiVector rov(overlapMap_, nv, false), zov(overlapMap_, nv, true);
+    rov.doImport(r, *import_, Tpetra::INSERT);
+    Teuchos::LAPACK<int, float> lapack;
+    std::vector<float> x;
+    for (size_t j = 0; j < nv; ++j) {
+      const auto rv = rov.getData(j);
+      auto zv = zov.getDataNonConst(j);
+      std::size_t lid = 0, entry = 0;
+      for (int m : sizes_) {
+        x.resize(m);
+        for (int a = 0; a < m; ++a)
+          x[a] = static_cast<float>(rv[lids_[lid + a]]);
+        int info = 0;
+        if (symmetric_)
+          lapack.POTRS('L', m, 1, factors_.data() + entry, m, x.data(), m, &info);
+        else
+          lapack.GETRS('N', m, 1, factors_.data() + entry, m, pivots_.data() + lid, x.data(), m,
+                       &info);
+        for (int a = 0; a < m; ++a)
+          zv[lids_[lid + a]] += x[a];
+        lid += m;
+        entry += static_cast<std::size_t>(m) * m;
+      }
+    }
+    MultiVector sum(rowMap_, nv, true);
+    sum.doExport(zov, *export_, Tpetra::ADD);
+    z.update(omega, sum, beta);
+  }
+
+  /// Patches and stored factor entries (floats) on this rank.
+  std::size_t patches() const { return sizes_.size(); }
+  std::size_t storedEntries() const { return factors_.size(); }
+
+private:
+  Teuchos::RCP<const Map> rowMap_, overlapMap_;
+  Teuchos::RCP<Tpetra::Import<>> import_;
+  Teuchos::RCP<Tpetra::Export<>> export_;
+  bool symmetric_ = true;
+  std::vector<int> sizes_;      // patch sizes m_i
+  std::vector<LO> lids_;        // the patches' rows, local ids of the overlap map, concatenated
+  std::vector<float> factors_;  // Cholesky (lower) or LU factors, column-major m_i × m_i
+  std::vector<int> pivots_;     // LU: the pivots of each patch, concatenated
+};
+
+// One symmetric V-cycle of geometric multigrid for S_σ (docs/theory.md §"Linear solvers"):
+// Galerkin coarse operators A_{l−1} = P_lᵀ A_l P_l on the nested hierarchy; on every finer level
+// the Chebyshev polynomial of degree `degree` in B_l A_l before and after the coarse correction,
+// B_l = Σ_i R_iᵀ A_{l,i}⁻¹ R_i the additive Schwarz smoother on vertex (2D) or edge (3D) patches
+// (PatchSmoother), on the interval [λ_max/ratio, λ_max] of B_l A_l; a direct solve on the
+// coarsest level. The same polynomial before and after keeps the cycle symmetric (MINRES).
 class StressMultigrid : public Operator {
 public:
   struct Level {
-    Teuchos::RCP<const CrsMatrix> A, P, B;  // P: from level l−1 into l
-    double omega = 1.0;
+    Teuchos::RCP<const CrsMatrix> A, P;  // P: from level l−1 into l
+    std::shared_ptr<const PatchSmoother> B;
+    double lambdaMax = 1.0;  // upper bound of the spectrum of B A (power iteration × 1.1)
   };
   std::vector<Level> levels;  // coarsest first
   Teuchos::RCP<DirectSolver> coarse;
-  int sweeps = 1;  // smoothing steps before and after the coarse correction (V(1,1))
-  double dampingFactor = 1.0;  // ω = dampingFactor / λ_max(B A)
+  int degree = 2;       // Chebyshev degree (smoother applications before and after)
+  double ratio = 10.0;  // λ_max / λ_min of the smoothed interval
   mutable long long cycles = 0;
 
   Teuchos::RCP<const Map> getDomainMap() const override { return levels.back().A->getDomainMap(); }
@@ -198,107 +337,46 @@ public:
     }
     const Level& L = levels[l];
     const size_t m = b.getNumVectors();
-    L.B->apply(b, x, Teuchos::NO_TRANS, L.omega, 0.0);  // pre-smoothing from x = 0
+    smooth(L, b, x, true);
     MultiVector r(b, Teuchos::Copy);
-    for (int sweep = 1; sweep < sweeps; ++sweep) {
-      Tpetra::deep_copy(r, b);
-      L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
-      L.B->apply(r, x, Teuchos::NO_TRANS, L.omega, 1.0);
-    }
-    Tpetra::deep_copy(r, b);
     L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
     MultiVector rc(L.P->getDomainMap(), m, false), ec(L.P->getDomainMap(), m, false);
     L.P->apply(r, rc, Teuchos::TRANS);
     vcycle(l - 1, rc, ec);
     L.P->apply(ec, x, Teuchos::NO_TRANS, 1.0, 1.0);
-    for (int sweep = 0; sweep < sweeps; ++sweep) {  // post-smoothing
+    smooth(L, b, x, false);
+  }
+
+  // x ← x + p(B A) B (b − A x) with the Chebyshev iteration of `degree` steps on
+  // [λ_max/ratio, λ_max] (Saad, Iterative Methods, Alg. 12.1, preconditioned by B); `zero`: x = 0
+  // on entry (its residual is b).
+  void smooth(const Level& L, const MultiVector& b, MultiVector& x, bool zero) const
+  {
+    const double lmax = L.lambdaMax, lmin = lmax / ratio;
+    const double theta = 0.5 * (lmax + lmin), delta = 0.5 * (lmax - lmin), sigma = theta / delta;
+    double rho = 1.0 / sigma;
+    MultiVector r(b, Teuchos::Copy), d(x.getMap(), x.getNumVectors(), false);
+    if (!zero)
+      L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+    L.B->apply(r, d, 1.0 / theta, 0.0);
+    if (zero)
+      Tpetra::deep_copy(x, d);
+    else
+      x.update(1.0, d, 1.0);
+    for (int k = 1; k < degree; ++k) {
       Tpetra::deep_copy(r, b);
       L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
-      L.B->apply(r, x, Teuchos::NO_TRANS, L.omega, 1.0);
+      const double rhoNew = 1.0 / (2.0 * sigma - rho);
+      d.scale(rhoNew * rho);
+      L.B->apply(r, d, 2.0 * rhoNew / delta, 1.0);
+      x.update(1.0, d, 1.0);
+      rho = rhoNew;
     }
   }
 };
 
-namespace {
-
-// B = Σ_i R_iᵀ A_i⁻¹ R_i over the patches (σ global ids) of this rank; rows of patches that other
-// ranks own are sent to them (summed by fillComplete). A_i is inverted by LAPACK (Cholesky if
-// symmetric).
-Teuchos::RCP<CrsMatrix> patchSmoother(const CrsMatrix& A,
-                                      const std::vector<std::vector<long long>>& patches,
-                                      bool symmetric)
-{
-  std::vector<GO> ov;
-  for (const auto& p : patches)
-    ov.insert(ov.end(), p.begin(), p.end());
-  std::sort(ov.begin(), ov.end());
-  ov.erase(std::unique(ov.begin(), ov.end()), ov.end());
-  const auto inv = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto ovMap = Teuchos::rcp(new Map(inv, Teuchos::ArrayView<const GO>(ov), 0, A.getComm()));
-  auto Aov = Teuchos::rcp(new CrsMatrix(ovMap, 0));
-  Aov->doImport(A, Tpetra::Import<>(A.getRowMap(), ovMap), Tpetra::INSERT);
-  Aov->fillComplete(A.getDomainMap(), A.getRangeMap());
-  const auto& colMap = *Aov->getColMap();
-  // B on the overlap rows (row length: the sizes of the patches containing the row, duplicates
-  // summed by fillComplete), then exported (added) to the owned rows.
-  std::vector<size_t> counts(ov.size(), 0);
-  for (const auto& p : patches)
-    for (GO g : p)
-      counts[ovMap->getLocalElement(g)] += p.size();
-  auto Bov = Teuchos::rcp(new CrsMatrix(ovMap, Teuchos::ArrayView<const size_t>(counts)));
-  Teuchos::LAPACK<int, double> lapack;
-  std::vector<double> dense, work;
-  std::vector<int> ipiv;
-  for (const auto& p : patches) {
-    const int m = static_cast<int>(p.size());
-    if (m == 0)
-      continue;
-    dense.assign(static_cast<std::size_t>(m) * m, 0.0);
-    for (int a = 0; a < m; ++a) {
-      typename CrsMatrix::local_inds_host_view_type inds;
-      typename CrsMatrix::values_host_view_type v;
-      Aov->getLocalRowView(ovMap->getLocalElement(p[a]), inds, v);
-      for (size_t k = 0; k < inds.extent(0); ++k) {
-        const GO g = colMap.getGlobalElement(inds(k));
-        const auto it = std::lower_bound(p.begin(), p.end(), g);
-        if (it != p.end() && *it == g)
-          dense[static_cast<std::size_t>(it - p.begin()) * m + a] = v(k);  // column-major
-      }
-    }
-    int info = 0;
-    if (symmetric) {
-      lapack.POTRF('L', m, dense.data(), m, &info);
-      SC_THROW_IF(info != 0, sc::core::ConvergenceError,
-                  "stress multigrid: a vertex-patch block is not positive definite (LAPACK potrf "
-                  "info " << info << ")");
-      lapack.POTRI('L', m, dense.data(), m, &info);
-      for (int a = 0; a < m; ++a)
-        for (int c = a + 1; c < m; ++c)
-          dense[static_cast<std::size_t>(c) * m + a] = dense[static_cast<std::size_t>(a) * m + c];
-    } else {
-      ipiv.resize(m);
-      lapack.GETRF(m, m, dense.data(), m, ipiv.data(), &info);
-      SC_THROW_IF(info != 0, sc::core::ConvergenceError,
-                  "stress multigrid: a vertex-patch block is singular (LAPACK getrf info " << info
-                                                                                       << ")");
-      work.resize(static_cast<std::size_t>(m) * 64);
-      lapack.GETRI(m, dense.data(), m, ipiv.data(), work.data(), static_cast<int>(work.size()), &info);
-    }
-    std::vector<double> row(m);
-    for (int a = 0; a < m; ++a) {
-      for (int c = 0; c < m; ++c)
-        row[c] = dense[static_cast<std::size_t>(c) * m + a];
-      Bov->insertGlobalValues(p[a], Teuchos::ArrayView<const GO>(p), Teuchos::ArrayView<const double>(row));
-    }
-  }
-  Bov->fillComplete(A.getDomainMap(), A.getRangeMap());
-  Tpetra::Export<> exporter(ovMap, A.getRowMap());
-  return Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(Bov, exporter, A.getDomainMap(),
-                                                           A.getRangeMap());
-}
-
 // λ_max(B A) by power iteration (B A is similar to an SPD operator when both are SPD).
-double largestEigenvalue(const CrsMatrix& B, const CrsMatrix& A, int iterations)
+double largestEigenvalue(const PatchSmoother& B, const CrsMatrix& A, int iterations)
 {
   MultiVector v(A.getDomainMap(), 1), w(A.getRangeMap(), 1), z(A.getDomainMap(), 1);
   v.randomize();
@@ -308,7 +386,7 @@ double largestEigenvalue(const CrsMatrix& B, const CrsMatrix& A, int iterations)
     v.norm2(n());
     v.scale(1.0 / n[0]);
     A.apply(v, w);
-    B.apply(w, z);
+    B.apply(w, z, 1.0, 0.0);
     z.norm2(n());
     lambda = n[0];
     Tpetra::deep_copy(v, z);
@@ -319,6 +397,7 @@ double largestEigenvalue(const CrsMatrix& B, const CrsMatrix& A, int iterations)
 // The V-cycle of S (the finest level's S_σ) on the hierarchy of `blocks`.
 Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
                                              const Teuchos::RCP<CrsMatrix>& S, bool symmetric,
+                                             const IterativeOptions& options,
                                              const Teuchos::ParameterList& directList)
 {
   const auto& levels = blocks.multigrid;
@@ -327,12 +406,9 @@ Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
               "Linear Solver/Iterative/Stress block = Multigrid needs a hierarchy of nested meshes "
               "(uniform refinements of one initial mesh); this system has "
                   << L << " level(s). Use a Stress block of MUMPS or KLU2.");
-  // 3D vertex stars hold ~450 σ DOFs at k = 1: their dense inverses, assembled explicitly, took
-  // more than 5 GB at 262k DOFs (docs/solvers.md). 2D only until a cheaper 3D smoother exists.
-  SC_THROW_IF(blocks.dimension != 2, sc::core::InputError,
-              "Linear Solver/Iterative/Stress block = Multigrid is available in 2D only (its "
-              "vertex-patch smoother is too large in 3D, docs/solvers.md); use MUMPS or KLU2");
   auto mg = Teuchos::rcp(new StressMultigrid());
+  mg->degree = options.smootherDegree > 0 ? options.smootherDegree : (blocks.dimension == 2 ? 2 : 3);
+  mg->ratio = options.smootherRatio;
   mg->levels.resize(L);
   mg->levels[L - 1].A = S;
   for (int l = L - 1; l >= 1; --l) {
@@ -367,8 +443,10 @@ Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
   }
   for (int l = 1; l < L; ++l) {
     auto& lev = mg->levels[l];
-    lev.B = patchSmoother(*lev.A, levels[l].patches, symmetric);
-    lev.omega = mg->dampingFactor / largestEigenvalue(*lev.B, *lev.A, 15);
+    lev.B = std::make_shared<PatchSmoother>(*lev.A, levels[l].patches, symmetric);
+    // 15 power steps underestimate λ_max; the Chebyshev polynomial grows outside its interval,
+    // so the bound is raised by 10% (Ifpack2's default boost factor).
+    lev.lambdaMax = 1.1 * largestEigenvalue(*lev.B, *lev.A, 15);
   }
   Teuchos::ParameterList dl(directList);
   if (!dl.isParameter("Type"))
@@ -573,7 +651,7 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
   } else if (options_.stressBlock == "Multigrid") {
     Teuchos::ParameterList dl(options_.directList);
     dl.set("Type", std::string("MUMPS"));
-    prec.stressMultigrid = buildMultigrid(blocks, m.stressOfOperator, symmetric, dl);
+    prec.stressMultigrid = buildMultigrid(blocks, m.stressOfOperator, symmetric, options_, dl);
   } else {
     Teuchos::ParameterList ml;
     ml.set("verbosity", "none");

@@ -12,8 +12,9 @@
 //   - MUMPS or KLU2: exact (robust in h and λ; the cost of a direct solve of the σ block, which
 //     is SPD and smaller than the saddle-point system);
 //   - Multigrid: one symmetric V(1,1) cycle of geometric multigrid on the nested hierarchy of
-//     BlockStructure::multigrid (Galerkin coarse operators, additive vertex-patch Schwarz
-//     smoother, direct coarsest solve), docs/theory.md §"Linear solvers". 2D only;
+//     BlockStructure::multigrid (Galerkin coarse operators, additive Schwarz smoother
+//     on vertex (2D) or edge (3D) patches, direct coarsest solve), docs/theory.md §"Linear
+//     solvers";
 //   - MueLu: smoothed-aggregation AMG, one V-cycle. Not robust (the kernel of div): offered to
 //     measure that, docs/solvers.md.
 //
@@ -38,7 +39,11 @@ struct IterativeOptions {
   int maxIterations = 1000;
   int restart = 300;            ///< GMRES Krylov subspace size
   int outputFrequency = 0;      ///< print the residual every n iterations (0: never)
-  std::string stressBlock = "MUMPS";  ///< MUMPS, KLU2, MueLu
+  std::string stressBlock = "MUMPS";  ///< MUMPS, KLU2, Multigrid, MueLu
+  /// Stress block = Multigrid: Chebyshev degree of the patch smoother (0: 2 in 2D, 3 in 3D) and
+  /// the ratio λ_max/λ_min of the smoothed part of the spectrum of B A.
+  int smootherDegree = 0;
+  double smootherRatio = 10.0;
   /// The "Linear Solver" list of the direct stress-block sub-solver (Type set from stressBlock).
   Teuchos::ParameterList directList;
 };

@@ -42,7 +42,7 @@ struct MultigridLevel {
   /// each level; row map = this level's owned σ DOFs in the order of the operator's row map on
   /// the finest level); null on the coarsest level.
   Teuchos::RCP<const CrsMatrix> prolongation;
-  /// σ DOF ids of the vertex patches this rank smooths on this level (unused on the coarsest).
+  /// σ DOF ids of the smoother patches (vertex stars in 2D, edge stars in 3D) this rank smooths on this level (unused on the coarsest).
   std::vector<std::vector<long long>> patches;
 };
 
@@ -59,7 +59,7 @@ struct BlockStructure {
   /// zero), unscaled. M_u must be element-block diagonal (discontinuous displacements).
   Teuchos::RCP<const CrsMatrix> fieldMass;
   /// Nested hierarchy, coarsest level first, the last level being the operator's mesh: needed by
-  /// `Stress block` = Multigrid (sc::assembly::stressProlongation, stressVertexPatches).
+  /// `Stress block` = Multigrid (sc::assembly::stressProlongation, stressPatches).
   std::vector<MultigridLevel> multigrid;
 
   bool isSet() const { return stressDofs + displacementDofs + rotationDofs > 0; }

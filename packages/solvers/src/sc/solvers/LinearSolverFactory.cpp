@@ -58,6 +58,8 @@ const std::vector<std::pair<std::string, Builder>>& registry()
          o.restart = il.get<int>("Restart");
          o.outputFrequency = il.get<int>("Output frequency");
          o.stressBlock = il.get<std::string>("Stress block");
+         o.smootherDegree = il.get<int>("Multigrid smoother degree");
+         o.smootherRatio = il.get<double>("Multigrid smoother eigenvalue ratio");
          o.directList = pl;  // the sub-solver inherits MUMPS options and equilibration
          o.directList.remove("Iterative");
          return Teuchos::rcp(new IterativeSolver(o));
@@ -127,11 +129,20 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                   "Solver of the stress block S_σ = A + (2μ)⁻¹B_uᵀM_u⁻¹B_u of the block-diagonal "
                   "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §\"Linear solvers\"): MUMPS or KLU2 (exact: "
                   "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
-                  "block); Multigrid (one geometric V-cycle with vertex-patch smoothers on the "
-                  "nested hierarchy; 2D, C++ API only: the application does not keep the "
-                  "hierarchy yet); or MueLu (smoothed aggregation AMG, one V-cycle: not robust, "
+                  "block); Multigrid (one geometric V-cycle with vertex-patch (2D) or edge-patch (3D) "
+                  "smoothers on the nested hierarchy; C++ API only: the application does not "
+                  "keep the hierarchy yet); or MueLu (smoothed aggregation AMG, one V-cycle: not robust, "
                   "the kernel of div; offered for comparison). SuperLU is not in Debian's "
                   "Trilinos.");
+    declareInt(il, "Multigrid smoother degree", 0,
+               "Stress block = Multigrid: degree of the Chebyshev polynomial of the patch "
+               "smoother, applied before and after the coarse correction on every level; 0: 2 in "
+               "2D, 3 in 3D (docs/solvers.md, measured).",
+               0, 20);
+    declareReal(il, "Multigrid smoother eigenvalue ratio", 10.0,
+                "Stress block = Multigrid: the Chebyshev smoother damps the spectrum of B A in "
+                "[λ_max/ratio, λ_max] (B the patch smoother, λ_max from power iteration).",
+                1.0, true, 1e6, false);
     auto& mp = pl->sublist("MUMPS", false, "Options of the MUMPS solver (used when Type = MUMPS, or as the Iterative stress block).");
     declareInt(mp, "Memory relaxation percent", 30,
                "ICNTL(14): workspace added to the analysis estimate, in percent. Pivoting in "
