@@ -44,9 +44,12 @@ class MixedElasticitySpace;
 namespace sc::assembly {
 class MixedElasticityAssembler;
 class MixedElasticitySystem;
+class StressHierarchy;
 }  // namespace sc::assembly
 namespace sc::solvers {
 class LinearSolver;
+struct MultigridLevel;
+struct ProblemSize;
 }
 namespace sc::core {
 class ExactSolution;
@@ -113,6 +116,10 @@ private:
   /// The cycle's assembly::MixedElasticitySystem: partition, spaces, assembled matrix.
   void setupElasticity();
   void solveElasticity();
+  /// The stress-block multigrid levels for this cycle's space (empty without hierarchy_).
+  std::vector<solvers::MultigridLevel> multigridLevels();
+  /// What Linear Solver/Type = Auto decides on, for a system of `dofs` unknowns.
+  solvers::ProblemSize autoProblem(long long dofs) const;
   void solveContact();
   /// The reconstruction and estimate of the cycle (estimate_; none if nothing was solved), and
   /// the error against the exact solution when there is one.
@@ -170,6 +177,13 @@ private:
   Teuchos::RCP<const disc::MixedElasticitySpace> space_;       ///< system_'s space
   const assembly::MixedElasticityAssembler* assembler_ = nullptr;  ///< system_'s assembler
   Teuchos::RCP<solvers::LinearSolver> solver_;
+  /// Linear Solver/Iterative/Stress block = Multigrid: the meshes of the run (initial mesh and
+  /// every refinement, or the restored mesh after a restart), from which the multigrid levels
+  /// are chosen each cycle; null otherwise.
+  std::unique_ptr<assembly::StressHierarchy> hierarchy_;
+  /// Linear Solver/Type = Auto: solver_ is chosen per cycle; autoType_ = its resolved Type.
+  bool autoSolver_ = false;
+  std::string autoType_;
   std::vector<int> linearIterations_;  // Krylov iterations per solve of the current cycle
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;
   bool solved_ = false;

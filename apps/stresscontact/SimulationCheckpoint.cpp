@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sc/assembly/Multigrid.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/core/Error.hpp>
@@ -211,6 +212,11 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
         names + " (was the mesh file changed?)");
   refiner_->restore(s, "checkpoint '" + path + "'");
   mesh_ = refiner_->mesh();
+  if (hierarchy_) {
+    // The meshes before the checkpoint are not stored: the hierarchy restarts from this one.
+    hierarchy_ = std::make_unique<assembly::StressHierarchy>(discretization_.degree, comm_);
+    hierarchy_->addMesh(mesh_, {});
+  }
   if (mesh_->numElements() != scalar("mesh_elements") || mesh_->numVertices() != scalar("mesh_vertices"))
     bad("holds a mesh that does not rebuild to its recorded size (damaged)");
 

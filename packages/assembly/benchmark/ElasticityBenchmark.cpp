@@ -33,6 +33,7 @@
 
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/assembly/Multigrid.hpp>
+#include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
@@ -134,8 +135,7 @@ int main(int argc, char* argv[])
   }
   // Stress block = Multigrid: the nested hierarchy (coarsest first), extended at every refinement.
   const bool multigrid = stressBlock == "Multigrid";
-  std::vector<sc::solvers::MultigridLevel> hierarchy;
-  Teuchos::RCP<const sc::disc::MixedElasticitySpace> previous;
+  sc::assembly::StressHierarchy hierarchy(degree, comm);
   std::vector<int> parent;  // fine element -> coarse element of the last refinement
   while (true) {
     auto m = refiner->mesh();
@@ -147,15 +147,9 @@ int main(int argc, char* argv[])
     const auto& space = system.space();
     if (space.numGlobalDofs() > maxDofs)
       break;
-    if (multigrid) {
-      if (previous.is_null())
-        hierarchy.push_back({});
-      else
-        hierarchy.push_back({sc::assembly::stressProlongation(*previous, space, parent, comm),
-                             sc::assembly::stressPatches(space)});
-      previous = system.spacePtr();
-    }
-    if (space.numGlobalDofs() < minDofs || (multigrid && hierarchy.size() < 2)) {
+    if (multigrid)
+      hierarchy.addMesh(m, parent);
+    if (space.numGlobalDofs() < minDofs || (multigrid && hierarchy.numMeshes() < 2)) {
       parent = refiner->refineUniformly().elementParent;
       continue;
     }
@@ -180,13 +174,24 @@ int main(int argc, char* argv[])
       auto solver = sc::solvers::createLinearSolver(sl);
       auto x = assembler.createVector();
       // scaling and (Krylov) block structure, as the application
-      system.prepareSolver(*solver, type == "Iterative" ? hierarchy : std::vector<sc::solvers::MultigridLevel>{});
+      system.prepareSolver(*solver, type == "Iterative" && multigrid
+                                        ? hierarchy.levels(space)
+                                        : std::vector<sc::solvers::MultigridLevel>{});
       comm->barrier();
       const double tOp = Teuchos::Time::wallTime();
-      solver->setOperator(assembler.matrix(), true);
-      const double opS = maxOverRanks(*comm, Teuchos::Time::wallTime() - tOp);
-      comm->barrier();
-      solver->solve(*assembler.rhs(), *x);
+      double opS = 0.0;
+      try {
+        solver->setOperator(assembler.matrix(), true);
+        opS = maxOverRanks(*comm, Teuchos::Time::wallTime() - tOp);
+        comm->barrier();
+        solver->solve(*assembler.rhs(), *x);
+      } catch (const sc::core::Error& e) {  // thrown on every rank (e.g. MUMPS out of memory)
+        if (comm->getRank() == 0)
+          std::printf("  %9lld %8d %-9s failed after %.1f s, peak %.0f MB: %s\n", dofs, elements,
+                      type.c_str(), Teuchos::Time::wallTime() - tOp, peakMemoryMB(), e.what());
+        std::fflush(stdout);
+        continue;
+      }
       const auto& st = solver->lastSolveStats();
       const double analyseS =
           solver->isIterative() ? opS : maxOverRanks(*comm, st.symbolicSeconds);

@@ -105,13 +105,9 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   solverList.set("Type", s.solver);
   auto solver = solvers::createLinearSolver(solverList);
   std::vector<LevelResult> results;
-  std::vector<solvers::MultigridLevel> hierarchy;
-  Teuchos::RCP<const disc::MixedElasticitySpace> previous;
-  if (s.multigrid) {
-    // The coarsest level: its partition and spaces (nothing is assembled there).
-    previous = assembly::MixedElasticitySystem(refiner->mesh(), s.degree, comm).spacePtr();
-    hierarchy.push_back({});
-  }
+  assembly::StressHierarchy hierarchy(s.degree, comm);
+  if (s.multigrid)
+    hierarchy.addMesh(refiner->mesh(), {});
   for (int level = 0; level < s.levels; ++level) {
     const mesh::RefinementStep* step = nullptr;
     if (s.multigrid) {
@@ -133,17 +129,15 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
                             m, s.degree, std::vector<int>(m->numElements(), 0), comm, curved)
                       : std::make_unique<assembly::MixedElasticitySystem>(m, s.degree, comm, curved);
     const auto& space = system->space();
-    if (s.multigrid) {
-      hierarchy.push_back({assembly::stressProlongation(*previous, space, step->elementParent, comm),
-                           assembly::stressPatches(space)});
-      previous = system->spacePtr();
-    }
+    if (s.multigrid)
+      hierarchy.addMesh(m, step->elementParent);
     assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};
     if (!s.boundaryConditions.empty())
       data.boundaryConditions.conditions = s.boundaryConditions;
     system->assemble(data);
     const auto& assembler = system->assembler();
-    auto x = system->solve(*solver, hierarchy);
+    auto x = system->solve(*solver, s.multigrid ? hierarchy.levels(space)
+                                                : std::vector<solvers::MultigridLevel>{});
     LevelResult r;
     r.iterations = solver->lastSolveStats().iterations;
     r.relativeResidual = solver->lastSolveStats().relativeResidual;

@@ -2,7 +2,9 @@
 //  - the RT prolongation is exact between nested meshes: the prolongated coarse solution, a
 //    fine-mesh function, equals the coarse one (values and divergence) at the cubature points of
 //    every fine element to rounding, 2D and 3D, k = 1 and 2, at any rank count;
-//  - the vertex (2D) and edge (3D) patches cover every σ DOF, one patch per entity over the ranks.
+//  - the vertex (2D) and edge (3D) patches cover every σ DOF, one patch per entity over the ranks;
+//  - StressHierarchy chooses levels that shrink by the ratio from a locally refined sequence, and
+//    the multigrid on them solves to the MUMPS solution.
 #include <cmath>
 #include <set>
 
@@ -14,6 +16,8 @@
 
 #include <sc/assembly/Multigrid.hpp>
 #include <sc/disc/ElementValues.hpp>
+#include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
 
 #include "ElasticityTestProblem.hpp"
 
@@ -169,5 +173,72 @@ void checkPatches(int dim, Teuchos::FancyOStream& out, bool& success)
 TEUCHOS_UNIT_TEST(Multigrid, PatchesCoverTheStressDofs2D) { checkPatches(2, out, success); }
 
 TEUCHOS_UNIT_TEST(Multigrid, PatchesCoverTheStressDofs3D) { checkPatches(3, out, success); }
+
+// Local refinement towards the corner (0, 0), 7 steps that add few elements each: the levels
+// chosen shrink by at least the ratio 2, the first mesh is the coarsest, and MINRES with the
+// multigrid on them reaches the MUMPS solution (docs/solvers.md, "The application's hierarchy").
+TEUCHOS_UNIT_TEST(Multigrid, HierarchyOfLocalRefinements)
+{
+  auto comm = Tpetra::getDefaultComm();
+  Teuchos::ParameterList meshList;
+  meshList.set("Source", std::string("Unit square"));
+  meshList.set("Initial mesh size", 0.25);
+  auto refiner = sc::mesh::MeshFactory::build(meshList, 2);
+  sc::assembly::StressHierarchy hierarchy(1, comm);
+  hierarchy.addMesh(refiner->mesh(), {});
+  for (int step = 0; step < 7; ++step) {
+    const auto& m = *refiner->mesh();
+    std::vector<int> marked;
+    for (int e = 0; e < m.numElements(); ++e) {
+      const int* v = m.elementVertices(e);
+      double x = 0.0, y = 0.0;
+      for (int j = 0; j < 3; ++j) {
+        x += m.coordinates()[2 * v[j]] / 3.0;
+        y += m.coordinates()[2 * v[j] + 1] / 3.0;
+      }
+      if (x + y < 0.6)
+        marked.push_back(e);
+    }
+    const auto& st = refiner->refine(marked);
+    hierarchy.addMesh(refiner->mesh(), st.elementParent);
+  }
+  auto m = refiner->mesh();
+  sc::assembly::MixedElasticitySystem system(m, 1, comm);
+  const auto levels = hierarchy.levels(system.space());
+  const auto& chosen = hierarchy.chosen();
+  out << "meshes:";
+  for (int i = 0; i < hierarchy.numMeshes(); ++i)
+    out << " " << hierarchy.meshElements(i);
+  out << "\nchosen:";
+  for (int i : chosen)
+    out << " " << hierarchy.meshElements(i);
+  out << "\n";
+  TEST_EQUALITY(levels.size(), chosen.size());
+  TEST_COMPARE(chosen.size(), >=, 3u);
+  TEST_EQUALITY(chosen.front(), 0);
+  TEST_EQUALITY(chosen.back(), hierarchy.numMeshes() - 1);
+  for (std::size_t l = 1; l < chosen.size(); ++l)
+    TEST_COMPARE(2 * hierarchy.meshElements(chosen[l - 1]), <=, hierarchy.meshElements(chosen[l]));
+
+  sc::core::Material material{1.0, 0.3};
+  auto exact = sc::core::createExactSolution("Manufactured smooth", 2, material, M_PI);
+  system.assemble({material, sc::test::verificationBoundaryConditions(2), exact.get()});
+  Teuchos::ParameterList direct, krylov;
+  direct.set("Type", std::string("MUMPS"));
+  krylov.set("Type", std::string("Iterative"));
+  krylov.sublist("Iterative").set("Stress block", std::string("Multigrid"));
+  auto mumps = sc::solvers::createLinearSolver(direct);
+  auto mg = sc::solvers::createLinearSolver(krylov);
+  auto x = system.solve(*mumps);
+  auto y = system.solve(*mg, levels);
+  y->update(-1.0, *x, 1.0);
+  Teuchos::Array<double> dn(1), xn(1);
+  y->norm2(dn());
+  x->norm2(xn());
+  out << system.space().numGlobalDofs() << " DOFs: " << mg->lastSolveStats().iterations
+      << " MINRES iterations, |x_MG − x_MUMPS| / |x_MUMPS| = " << dn[0] / xn[0] << "\n";
+  TEST_COMPARE(dn[0] / xn[0], <=, 1e-6);
+  TEST_COMPARE(mg->lastSolveStats().iterations, <=, 120);  // uniform hierarchies: 75-86
+}
 
 }  // namespace

@@ -65,4 +65,31 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, DefaultsAndDocumentation)
   TEST_ASSERT(solver->exploitsSymmetry());
 }
 
+// Type = Auto (docs/solvers.md): MUMPS except 3D, no contact, with a hierarchy, at or above
+// kAutoIterativeDofs3D unknowns; it must be resolved before a solver is built.
+TEUCHOS_UNIT_TEST(LinearSolverFactory, AutoPolicy)
+{
+  using sc::solvers::ProblemSize;
+  Teuchos::ParameterList pl;
+  pl.set("Type", std::string("Auto"));
+  TEST_THROW(sc::solvers::createLinearSolver(pl), sc::core::InputError);
+  const long long big = sc::solvers::kAutoIterativeDofs3D;
+  auto typeFor = [&](const ProblemSize& p) {
+    return sc::solvers::resolveAutoType(pl, p).get<std::string>("Type");
+  };
+  TEST_EQUALITY(typeFor({2, 10 * big, 1, false, true}), "MUMPS");     // 2D: MUMPS is faster
+  TEST_EQUALITY(typeFor({3, big - 1, 1, false, true}), "MUMPS");      // below the threshold
+  TEST_EQUALITY(typeFor({3, big, 4, true, true}), "MUMPS");           // contact
+  TEST_EQUALITY(typeFor({3, big, 2, false, false}), "MUMPS");         // no hierarchy
+  TEST_EQUALITY(typeFor({3, big, 2, false, true}), "Iterative");
+  const auto resolved = sc::solvers::resolveAutoType(pl, {3, big, 1, false, true});
+  TEST_EQUALITY(resolved.sublist("Iterative").get<std::string>("Stress block"), "Multigrid");
+  auto solver = sc::solvers::createLinearSolver(pl, {3, big, 1, false, true});
+  TEST_ASSERT(solver->isIterative());
+  TEST_EQUALITY(sc::solvers::createLinearSolver(pl, {3, 1000, 1, false, true})->name(), "MUMPS");
+  // another Type passes through unchanged
+  pl.set("Type", std::string("KLU2"));
+  TEST_EQUALITY(typeFor({3, big, 1, false, true}), "KLU2");
+}
+
 }  // namespace

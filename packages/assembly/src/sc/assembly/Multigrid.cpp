@@ -10,10 +10,12 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
+#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
+#include <sc/solvers/LinearSolver.hpp>
 
 namespace sc::assembly {
 
@@ -183,6 +185,65 @@ std::vector<std::vector<long long>> stressPatches(const disc::MixedElasticitySpa
     patches.push_back(std::move(p));
   }
   return patches;
+}
+
+StressHierarchy::StressHierarchy(int degree, Teuchos::RCP<const Teuchos::Comm<int>> comm,
+                                 double ratio)
+  : degree_(degree), comm_(std::move(comm)), ratio_(ratio)
+{
+}
+
+StressHierarchy::~StressHierarchy() = default;
+
+void StressHierarchy::addMesh(Teuchos::RCP<const mesh::SimplexMesh> mesh,
+                              const std::vector<int>& parent)
+{
+  SC_THROW_IF(!meshes_.empty() && static_cast<int>(parent.size()) != mesh->numElements(),
+              core::InternalError,
+              "StressHierarchy: " << parent.size() << " parents for " << mesh->numElements()
+                                  << " elements");
+  meshes_.push_back(std::move(mesh));
+  parents_.push_back(meshes_.size() == 1 ? std::vector<int>() : parent);
+}
+
+int StressHierarchy::meshElements(int i) const { return meshes_.at(i)->numElements(); }
+
+std::vector<solvers::MultigridLevel> StressHierarchy::levels(
+    const disc::MixedElasticitySpace& finest) const
+{
+  SC_THROW_IF(meshes_.empty() || &finest.mesh() != meshes_.back().get(), core::InternalError,
+              "StressHierarchy::levels: the space is not on the last mesh added");
+  const int n = static_cast<int>(meshes_.size());
+  // finest first while choosing
+  std::vector<int> pick = {n - 1};
+  for (int i = n - 2; i >= 0; --i)
+    if (ratio_ * meshes_[i]->numElements() <= meshes_[pick.back()]->numElements())
+      pick.push_back(i);
+  if (pick.size() > 1)
+    pick.back() = 0;  // the first mesh is the coarsest level (fewer elements: the ratio holds)
+  std::reverse(pick.begin(), pick.end());
+  chosen_ = pick;
+  std::vector<solvers::MultigridLevel> out(pick.size());
+  Teuchos::RCP<const disc::MixedElasticitySpace> previous;
+  for (std::size_t l = 0; l < pick.size(); ++l) {
+    const int i = pick[l];
+    Teuchos::RCP<const disc::MixedElasticitySpace> space;
+    if (l + 1 == pick.size())
+      space = Teuchos::rcpFromRef(finest);
+    else
+      space = MixedElasticitySystem(meshes_[i], degree_, comm_).spacePtr();
+    if (l > 0) {
+      // parent in mesh pick[l − 1] of every element of mesh i, composed over the meshes between
+      std::vector<int> parent = parents_[i];
+      for (int j = i - 1; j > pick[l - 1]; --j)
+        for (int& p : parent)
+          p = parents_[j][p];
+      out[l].prolongation = stressProlongation(*previous, *space, parent, comm_);
+      out[l].patches = stressPatches(*space);
+    }
+    previous = space;
+  }
+  return out;
 }
 
 }  // namespace sc::assembly

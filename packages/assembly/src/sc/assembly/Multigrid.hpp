@@ -12,6 +12,12 @@
 namespace sc::disc {
 class MixedElasticitySpace;
 }
+namespace sc::mesh {
+class SimplexMesh;
+}
+namespace sc::solvers {
+struct MultigridLevel;
+}
 
 namespace sc::assembly {
 
@@ -34,5 +40,38 @@ Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coa
 /// kernel of div is spanned by curls of vertex hats (2D) and of edge functions (3D), which these
 /// stars contain; 3D vertex stars would also do but hold ~450 σ DOFs at k = 1, edge stars ~90.
 std::vector<std::vector<long long>> stressPatches(const disc::MixedElasticitySpace& space);
+
+/// The nested meshes of a run (the initial mesh and every refinement of it, uniform or adaptive),
+/// from which the multigrid levels of the stress block are chosen (docs/solvers.md, "Geometric
+/// multigrid"): the finest mesh, then going coarser a mesh whenever it has at most 1/ratio of the
+/// elements of the last level chosen, the first mesh replacing the coarsest one chosen (a single
+/// level, solved directly, until a mesh has `ratio` times the first one's elements); the parents are
+/// composed over the meshes skipped. So adaptive cycles that add a few elements each still give
+/// a hierarchy whose levels shrink geometrically. All meshes are kept (a few per cent of the
+/// finest level's memory in 2D).
+class StressHierarchy {
+public:
+  StressHierarchy(int degree, Teuchos::RCP<const Teuchos::Comm<int>> comm, double ratio = 2.0);
+  ~StressHierarchy();
+  /// The first mesh (no parent), or a refinement of the last one added: parent[e] = the element
+  /// of the previous mesh that contains element e (mesh::RefinementStep::elementParent).
+  void addMesh(Teuchos::RCP<const mesh::SimplexMesh> mesh, const std::vector<int>& parent);
+  int numMeshes() const { return static_cast<int>(meshes_.size()); }
+  int meshElements(int i) const;
+  /// The levels for `finest`, the space on the last mesh added (coarsest first; a single level
+  /// when only one mesh is known: the stress block is then solved directly). The coarser levels'
+  /// spaces are built (partitioned) here.
+  std::vector<solvers::MultigridLevel> levels(const disc::MixedElasticitySpace& finest) const;
+  /// The mesh indices the last call of levels() chose (coarsest first).
+  const std::vector<int>& chosen() const { return chosen_; }
+
+private:
+  int degree_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  double ratio_;
+  std::vector<Teuchos::RCP<const mesh::SimplexMesh>> meshes_;
+  std::vector<std::vector<int>> parents_;  // parents_[i]: elements of mesh i -> mesh i − 1
+  mutable std::vector<int> chosen_;
+};
 
 }  // namespace sc::assembly

@@ -396,16 +396,18 @@ double largestEigenvalue(const PatchSmoother& B, const CrsMatrix& A, int iterati
 
 // The V-cycle of S (the finest level's S_σ) on the hierarchy of `blocks`.
 Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
-                                             const Teuchos::RCP<CrsMatrix>& S, bool symmetric,
+                                             const Teuchos::RCP<CrsMatrix>& S,
+                                             const std::vector<char>& constraintRows,
+                                             bool symmetric,
                                              const IterativeOptions& options,
                                              const Teuchos::ParameterList& directList)
 {
   const auto& levels = blocks.multigrid;
   const int L = static_cast<int>(levels.size());
-  SC_THROW_IF(L < 2, sc::core::InputError,
-              "Linear Solver/Iterative/Stress block = Multigrid needs a hierarchy of nested meshes "
-              "(uniform refinements of one initial mesh); this system has "
-                  << L << " level(s). Use a Stress block of MUMPS or KLU2.");
+  SC_THROW_IF(L < 1, sc::core::InputError,
+              "Linear Solver/Iterative/Stress block = Multigrid needs the nested mesh hierarchy "
+              "(solvers::BlockStructure::multigrid, e.g. from sc::assembly::StressHierarchy); "
+              "none was given. Use a Stress block of MUMPS or KLU2.");
   auto mg = Teuchos::rcp(new StressMultigrid());
   mg->degree = options.smootherDegree > 0 ? options.smootherDegree : (blocks.dimension == 2 ? 2 : 3);
   mg->ratio = options.smootherRatio;
@@ -416,8 +418,9 @@ Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
                 "stress multigrid: level " << l << " has no prolongation");
     auto P = Teuchos::rcp(new CrsMatrix(*levels[l].prolongation, Teuchos::Copy));
     const auto& A = *mg->levels[l].A;
-    if (l == L - 1) {
-      // Rows fixed by traction data (S has only its diagonal there) take no coarse correction.
+    {
+      // Rows with only a diagonal (fixed by traction data on the finest level; decoupled rows of
+      // a coarser one, below) take no coarse correction.
       Vector mask(P->getRangeMap());
       auto mv = mask.getDataNonConst(0);
       const auto& rows = *A.getRowMap();
@@ -430,14 +433,69 @@ Teuchos::RCP<StressMultigrid> buildMultigrid(const BlockStructure& blocks,
         bool offDiagonal = false;
         for (size_t k = 0; k < inds.extent(0) && !offDiagonal; ++k)
           offDiagonal = v(k) != 0.0 && cols.getGlobalElement(inds(k)) != g;
-        mv[i] = offDiagonal ? 1.0 : 0.0;
+        const bool constraint = l == L - 1 && constraintRows[rows.getLocalElement(g)];
+        mv[i] = offDiagonal && !constraint ? 1.0 : 0.0;
+      }
+      // The coarse basis functions with a normal trace on those rows' faces (traction DOFs of
+      // the coarse level) violate the fine constraint: drop them from the coarse space (zero
+      // columns; their coarse rows get a unit diagonal below). Keeping them with their
+      // constrained part cut off made P rank-deficient on locally refined hierarchies (a patch
+      // of a Galerkin operator not positive definite).
+      Vector flagged(P->getColMap(), true);
+      {
+        auto fv = flagged.getDataNonConst(0);
+        for (LO i = 0; i < static_cast<LO>(mv.size()); ++i) {
+          if (mv[i] != 0.0)
+            continue;
+          typename CrsMatrix::local_inds_host_view_type inds;
+          typename CrsMatrix::values_host_view_type v;
+          P->getLocalRowView(i, inds, v);
+          for (size_t k = 0; k < inds.extent(0); ++k)
+            if (v(k) != 0.0)
+              fv[inds(k)] = 1.0;
+        }
+      }
+      Vector coarseFlag(P->getDomainMap(), true);
+      coarseFlag.doExport(flagged, Tpetra::Export<>(P->getColMap(), P->getDomainMap()),
+                          Tpetra::ADD);
+      {
+        auto cv = coarseFlag.getDataNonConst(0);
+        for (LO j = 0; j < static_cast<LO>(cv.size()); ++j)
+          cv[j] = cv[j] != 0.0 ? 0.0 : 1.0;
       }
       P->leftScale(mask);
+      P->rightScale(coarseFlag);
     }
     auto AP = Teuchos::rcp(new CrsMatrix(A.getRowMap(), 0));
     Tpetra::MatrixMatrix::Multiply(A, false, *P, false, *AP);
     auto Ac = Teuchos::rcp(new CrsMatrix(P->getDomainMap(), 0));
     Tpetra::MatrixMatrix::Multiply(*P, true, *AP, false, *Ac);
+    // A coarse DOF whose fine image is only masked rows (on locally refined hierarchies: a
+    // traction DOF of an element that was not refined) has a zero row and column: set its
+    // diagonal to 1, a decoupled unknown that the restriction never excites.
+    {
+      Vector diag(Ac->getRowMap());
+      Ac->getLocalDiagCopy(diag);
+      const auto dv = diag.getData(0);
+      std::vector<LO> dead;
+      for (LO i = 0; i < static_cast<LO>(dv.size()); ++i)
+        if (dv[i] == 0.0)
+          dead.push_back(i);
+      long long nDead = static_cast<long long>(dead.size()), anyDead = 0;
+      Teuchos::reduceAll(*Ac->getComm(), Teuchos::REDUCE_SUM, 1, &nDead, &anyDead);
+      if (anyDead > 0) {
+        CrsMatrix D(Ac->getRowMap(), 1);
+        for (LO i : dead) {
+          const GO g = Ac->getRowMap()->getGlobalElement(i);
+          const double one = 1.0;
+          D.insertGlobalValues(g, Teuchos::ArrayView<const GO>(&g, 1),
+                               Teuchos::ArrayView<const double>(&one, 1));
+        }
+        D.fillComplete(P->getDomainMap(), P->getDomainMap());
+        Ac = Tpetra::MatrixMatrix::add(1.0, false, *Ac, 1.0, false, D, P->getDomainMap(),
+                                       P->getDomainMap());
+      }
+    }
     mg->levels[l].P = P;
     mg->levels[l - 1].A = Ac;
   }
@@ -651,7 +709,20 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
   } else if (options_.stressBlock == "Multigrid") {
     Teuchos::ParameterList dl(options_.directList);
     dl.set("Type", std::string("MUMPS"));
-    prec.stressMultigrid = buildMultigrid(blocks, m.stressOfOperator, symmetric, options_, dl);
+    // Rows of S_σ without displacement coupling are constraints (traction data, contact rows
+    // replaced by the active-set step): no coarse correction there (buildMultigrid).
+    std::vector<char> constraintRows(prec.stressMap->getNodeNumElements(), 0);
+    for (LO i = 0; i < static_cast<LO>(constraintRows.size()); ++i) {
+      typename CrsMatrix::local_inds_host_view_type inds;
+      typename CrsMatrix::values_host_view_type v;
+      Ksu->getLocalRowView(i, inds, v);
+      bool coupled = false;
+      for (size_t k = 0; k < inds.extent(0) && !coupled; ++k)
+        coupled = v(k) != 0.0;
+      constraintRows[i] = coupled ? 0 : 1;
+    }
+    prec.stressMultigrid =
+        buildMultigrid(blocks, m.stressOfOperator, constraintRows, symmetric, options_, dl);
   } else {
     Teuchos::ParameterList ml;
     ml.set("verbosity", "none");

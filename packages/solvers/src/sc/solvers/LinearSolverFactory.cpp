@@ -74,6 +74,7 @@ std::vector<std::string> LinearSolverFactory::knownTypes()
 {
   std::vector<std::string> names;
   for (const auto& t : registry()) names.push_back(t.first);
+  names.push_back("Auto");  // resolved to one of the above by resolveAutoType
   return names;
 }
 
@@ -86,7 +87,15 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                   "Solver for the saddle-point system (docs/theory.md §\"Linear solvers\"): KLU2 (Amesos2; gathers the "
                   "matrix on rank 0, serial LU), MUMPS (parallel multifrontal LU/LDLᵀ) or "
                   "Iterative (Belos MINRES/GMRES with the block-diagonal preconditioner, see the "
-                  "Iterative sublist; docs/solvers.md).");
+                  "Iterative sublist; docs/solvers.md), or Auto: MUMPS, except for 3D systems "
+                  "without contact of at least 'Auto iterative unknowns', where MUMPS' memory "
+                  "exceeds a 24 GB node and Iterative with Stress block = Multigrid is used (the "
+                  "choice is made per adaptive cycle; measured in docs/solvers.md).");
+    declareInt(*pl, "Auto iterative unknowns", static_cast<int>(kAutoIterativeDofs3D),
+               "Type = Auto: 3D systems without contact with at least this many unknowns use "
+               "Iterative with Stress block = Multigrid, smaller ones MUMPS (the default is the "
+               "measured limit of MUMPS on a 24 GB node, docs/solvers.md).",
+               1, 2000000000);
     declareBool(*pl, "Symmetric", true,
                 "Exploit symmetry when the system is symmetric (elasticity without contact rows; "
                 "the application knows which systems are): MUMPS factorises LDLᵀ (SYM = 2), about "
@@ -179,6 +188,10 @@ Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterL
   Teuchos::ParameterList pl(list);
   sc::core::validateParameters(pl, *getValidParameters(), "Linear Solver");
   const auto type = pl.get<std::string>("Type");
+  SC_THROW_IF(type == "Auto", sc::core::InputError,
+              "Linear Solver/Type = Auto is chosen from the problem (dimension, unknowns, ranks, "
+              "contact): resolve it with sc::solvers::resolveAutoType, or "
+              "createLinearSolver(list, ProblemSize)");
   const auto it = std::find_if(registry().begin(), registry().end(),
                                [&](const auto& t) { return t.first == type; });
   auto solver = it->second(pl);
@@ -194,6 +207,30 @@ Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterL
 Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList)
 {
   return LinearSolverFactory::create(linearSolverList);
+}
+
+Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& linearSolverList,
+                                       const ProblemSize& problem)
+{
+  Teuchos::ParameterList pl(linearSolverList);
+  if (!pl.isParameter("Type") || !pl.isType<std::string>("Type") ||
+      pl.get<std::string>("Type") != "Auto")
+    return pl;
+  const int threshold = pl.isParameter("Auto iterative unknowns")
+                            ? pl.get<int>("Auto iterative unknowns")
+                            : static_cast<int>(kAutoIterativeDofs3D);
+  const bool iterative = problem.dimension == 3 && !problem.contact && problem.hierarchy &&
+                         problem.dofs >= threshold;
+  pl.set("Type", std::string(iterative ? "Iterative" : "MUMPS"));
+  if (iterative)
+    pl.sublist("Iterative").set("Stress block", std::string("Multigrid"));
+  return pl;
+}
+
+Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList,
+                                              const ProblemSize& problem)
+{
+  return LinearSolverFactory::create(resolveAutoType(linearSolverList, problem));
 }
 
 Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList)

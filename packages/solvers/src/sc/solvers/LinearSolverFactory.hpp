@@ -23,7 +23,7 @@ public:
   /// a validator.
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
 
-  /// Known solver types, in the order they are listed to users.
+  /// Known solver types, in the order they are listed to users (KLU2, MUMPS, Iterative, Auto).
   static std::vector<std::string> knownTypes();
 
   /// Build the solver named by list's "Type". The list is validated (a copy, defaults filled in):
@@ -31,8 +31,30 @@ public:
   static Teuchos::RCP<LinearSolver> create(const Teuchos::ParameterList& linearSolverList);
 };
 
-/// Same as LinearSolverFactory::create.
+/// What `Type = Auto` looks at (docs/solvers.md, "Type = Auto").
+struct ProblemSize {
+  int dimension = 2;
+  long long dofs = 0;       ///< global unknowns of the system
+  int ranks = 1;
+  bool contact = false;     ///< contact rows (the stress multigrid is not available with them)
+  bool hierarchy = false;   ///< the caller provides BlockStructure::multigrid (nested meshes)
+};
+
+/// `Type = Auto`: MUMPS, except in 3D without contact, with a mesh hierarchy and at least
+/// `Auto iterative unknowns` (default kAutoIterativeDofs3D) unknowns, where MUMPS' memory (~N^{4/3}) exceeds one 24 GB node: there
+/// Iterative with Stress block = Multigrid (memory ~N). Measured in docs/solvers.md.
+constexpr long long kAutoIterativeDofs3D = 1500000;
+/// The list to build for `problem`: `list` itself unless its Type is Auto, else a copy with Type
+/// = MUMPS or Type = Iterative and Iterative/Stress block = Multigrid, by the rule above.
+Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& linearSolverList,
+                                       const ProblemSize& problem);
+
+/// Same as LinearSolverFactory::create. Type = Auto is an InputError here: it needs the problem
+/// (resolveAutoType, or the overload below).
 Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList);
+/// createLinearSolver(resolveAutoType(linearSolverList, problem)).
+Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList,
+                                              const ProblemSize& problem);
 /// The same for a direct type (KLU2, MUMPS), with the factorisation interface of DirectSolver;
 /// Type = Iterative is an InputError.
 Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList);
