@@ -119,7 +119,17 @@ void checkMultigrid(int dim, int levels, Teuchos::FancyOStream& out, bool& succe
 
 TEUCHOS_UNIT_TEST(IterativeSolver, MultigridRobust2D) { checkMultigrid(2, 3, out, success); }
 
-TEUCHOS_UNIT_TEST(IterativeSolver, MultigridRobust3D) { checkMultigrid(3, 2, out, success); }
+// At 1 rank only (test time, ~20 s per run): the rank independence of the V-cycle is asserted in
+// 2D (MultigridRobust2D, HierarchyOfLocalRefinements at 1, 2, 4 ranks; same code), and the 3D
+// counts were the same at 1, 2 and 4 ranks at 2·10⁶ unknowns (docs/solvers.md).
+TEUCHOS_UNIT_TEST(IterativeSolver, MultigridRobust3D)
+{
+  if (Tpetra::getDefaultComm()->getSize() > 1) {
+    out << "3D multigrid robustness: asserted at 1 rank only\n";
+    return;
+  }
+  checkMultigrid(3, 2, out, success);
+}
 
 // The same discrete solution as MUMPS to the solver tolerance (1e-8 relative residual; the
 // difference is bounded by the condition number times that), at ν = 0.3 and 0.5, 2D and 3D.
