@@ -316,7 +316,9 @@ solvers::ProblemSize Simulation::autoProblem(long long dofs) const
 
 std::vector<solvers::MultigridLevel> Simulation::multigridLevels()
 {
-  if (!hierarchy_)
+  // Type = Auto keeps the meshes in 3D but builds levels only for the cycles it solves with the
+  // multigrid.
+  if (!hierarchy_ || (autoSolver_ && autoType_ != "Iterative"))
     return {};
   auto levels = hierarchy_->levels(*space_);
   std::ostringstream os;
