@@ -177,9 +177,9 @@ private:
   Teuchos::RCP<const disc::MixedElasticitySpace> space_;       ///< system_'s space
   const assembly::MixedElasticityAssembler* assembler_ = nullptr;  ///< system_'s assembler
   Teuchos::RCP<solvers::LinearSolver> solver_;
-  /// Linear Solver/Iterative/Stress block = Multigrid: the meshes of the run (initial mesh and
-  /// every refinement, or the restored mesh after a restart), from which the multigrid levels
-  /// are chosen each cycle; null otherwise.
+  /// Linear Solver/Iterative/Stress block = Multigrid, or Type = Auto on a 3D scene without
+  /// contact: the meshes of the run (initial mesh and every refinement, or the restored mesh
+  /// after a restart), from which the multigrid levels are chosen each cycle; null otherwise.
   std::unique_ptr<assembly::StressHierarchy> hierarchy_;
   /// Linear Solver/Type = Auto: solver_ is chosen per cycle; autoType_ = its resolved Type.
   bool autoSolver_ = false;
