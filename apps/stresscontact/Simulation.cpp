@@ -73,27 +73,28 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
       contact::checkCurvedContact(dim, discretization_.degree, contact_.frame);
   }
   {
+    // The Linear Solver keys these checks need (the list is validated when the solver is built,
+    // below; absent keys read as their defaults here).
+    const auto& ls = params_->sublist("Linear Solver");
+    const auto text = [](const Teuchos::ParameterList& l, const char* key, const char* fallback) {
+      return l.isParameter(key) ? l.get<std::string>(key) : std::string(fallback);
+    };
+    const Teuchos::ParameterList none;
+    const auto& il = ls.isSublist("Iterative") ? ls.sublist("Iterative") : none;
+    const std::string type = text(ls, "Type", "MUMPS");
+    const bool iterative = type == "Iterative";
     // Stress block = Multigrid, or Type = Auto where it may choose it (3D without contact): keep
     // the nested meshes (the levels are chosen per cycle).
-    const auto& ls = params_->sublist("Linear Solver");
-    autoSolver_ = ls.isParameter("Type") && ls.get<std::string>("Type") == "Auto";
-    if ((ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative" &&
-         ls.isSublist("Iterative") && ls.sublist("Iterative").isParameter("Stress block") &&
-         ls.sublist("Iterative").get<std::string>("Stress block") == "Multigrid") ||
+    autoSolver_ = type == "Auto";
+    if ((iterative && text(il, "Stress block", "MUMPS") == "Multigrid") ||
         (autoSolver_ && dim == 3 && !boundaryConditions_.hasContact()))
       hierarchy_ = std::make_unique<assembly::StressHierarchy>(discretization_.degree, comm_);
-  }
-  {
-    const auto& ls = params_->sublist("Linear Solver");
     // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md §"Contact
     // and friction"), and Symmetric = false declines to exploit symmetry.
-    const bool minres = ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative" &&
-                        ls.isSublist("Iterative") && ls.sublist("Iterative").isParameter("Method") &&
-                        ls.sublist("Iterative").get<std::string>("Method") == "MINRES";
+    const bool minres = iterative && text(il, "Method", "Auto") == "MINRES";
     const bool symmetric = !ls.isParameter("Symmetric") || ls.get<bool>("Symmetric");
     // The Krylov solver with contact rows is verified (against MUMPS, run_hertz2d_iterative) in
     // 2D at degree 1 only; other contact scenes are rejected until a test covers them.
-    const bool iterative = ls.isParameter("Type") && ls.get<std::string>("Type") == "Iterative";
     SC_THROW_IF(iterative && boundaryConditions_.hasContact() &&
                     (dim != 2 || discretization_.degree != 1),
                 core::InputError,

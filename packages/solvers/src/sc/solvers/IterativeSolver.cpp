@@ -282,10 +282,6 @@ public:
     z.update(omega, sum, beta);
   }
 
-  /// Patches and stored factor entries (floats) on this rank.
-  std::size_t patches() const { return sizes_.size(); }
-  std::size_t storedEntries() const { return factors_.size(); }
-
 private:
   Teuchos::RCP<const Map> rowMap_, overlapMap_;
   Teuchos::RCP<Tpetra::Import<>> import_;
@@ -314,7 +310,6 @@ public:
   Teuchos::RCP<DirectSolver> coarse;
   int degree = 2;       // Chebyshev degree (smoother applications before and after)
   double ratio = 10.0;  // λ_max / λ_min of the smoothed interval
-  mutable long long cycles = 0;
 
   Teuchos::RCP<const Map> getDomainMap() const override { return levels.back().A->getDomainMap(); }
   Teuchos::RCP<const Map> getRangeMap() const override { return levels.back().A->getRangeMap(); }
@@ -325,7 +320,6 @@ public:
     SC_THROW_IF(mode != Teuchos::NO_TRANS || alpha != 1.0 || beta != 0.0, sc::core::InternalError,
                 "stress multigrid: only Y = V(X) is implemented");
     vcycle(static_cast<int>(levels.size()) - 1, X, Y);
-    ++cycles;
   }
 
   void vcycle(int l, const MultiVector& b, MultiVector& x) const
