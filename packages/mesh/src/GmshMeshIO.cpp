@@ -14,9 +14,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -64,7 +66,7 @@ std::string lastGmshError()
 // the run (every MPI rank) crashing. Returns the child's signal (> 0), or its non-zero exit
 // status negated (Gmsh calling exit), or 0 when Gmsh read the file without dying (it may still
 // have reported an error, which the real read then gives).
-int gmshReaderDies(const std::string& path)
+int gmshReaderDies(const std::string& path, unsigned timeLimitSeconds)
 {
   std::fflush(nullptr);
   const pid_t pid = ::fork();
@@ -79,6 +81,10 @@ int gmshReaderDies(const std::string& path)
       ::dup2(null, STDOUT_FILENO);
       ::dup2(null, STDERR_FILENO);
     }
+    // A reader that spins (a huge or pathological file) is ended by SIGALRM, whose default
+    // action terminates the child: the parent reports the time limit.
+    std::signal(SIGALRM, SIG_DFL);
+    ::alarm(timeLimitSeconds);
     try {
       GmshSession session;
       sc::core::FloatingPointTrapsSuspended gmshReads;
@@ -100,6 +106,175 @@ int gmshReaderDies(const std::string& path)
   if (WIFSIGNALED(status))
     return WTERMSIG(status);
   return WIFEXITED(status) ? -WEXITSTATUS(status) : 0;
+}
+
+// The mesh file, checked to be data and copied where nothing else is (docs/mesh.md "Gmsh files"):
+// - it must be a regular file (not a directory, device, pipe or socket: /dev/zero would make the
+//   reader spin forever);
+// - its first line must be Gmsh's MSH header `$MeshFormat`. gmsh::open decides what a file is
+//   from its first line, not from its name, and interprets anything that is not a mesh or
+//   another data format as a .geo script, which can run shell commands (`SystemCall`): a file
+//   called mesh.msh holding a script would be executed. Checking the header ourselves keeps
+//   every script away from Gmsh;
+// - Gmsh also merges an option file `<file>.opt` beside the file it opens, and option files are
+//   scripts too. The copy lives alone in a fresh directory, so there is none, and the file that
+//   was checked is the file that Gmsh reads (it cannot change in between).
+class PrivateMeshCopy {
+public:
+  PrivateMeshCopy(const std::string& path, const std::string& origin)
+  {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    SC_THROW_IF(fd < 0, sc::core::InputError,
+                origin << " (Mesh/File) cannot be opened: " << std::strerror(errno));
+    struct FdCloser {
+      int fd;
+      ~FdCloser() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    SC_THROW_IF(::fstat(fd, &st) != 0, sc::core::InputError,
+                origin << " (Mesh/File) cannot be read: " << std::strerror(errno));
+    SC_THROW_IF(S_ISDIR(st.st_mode), sc::core::InputError,
+                origin << " (Mesh/File) is a directory, not a .msh file");
+    SC_THROW_IF(!S_ISREG(st.st_mode), sc::core::InputError,
+                origin << " (Mesh/File) is not a regular file (a device, pipe or socket); "
+                          "Mesh/File must name a Gmsh .msh file");
+    size_ = static_cast<std::uintmax_t>(st.st_size);
+
+    std::string tmpl = (std::filesystem::temp_directory_path() / "stresscontact-mesh-XXXXXX").string();
+    SC_THROW_IF(::mkdtemp(tmpl.data()) == nullptr, sc::core::Error,
+                "cannot create a temporary directory for reading " << origin << ": "
+                    << std::strerror(errno) << " (set TMPDIR to a writable directory)");
+    dir_.path = tmpl;
+    path_ = dir_.path + "/mesh.msh";
+    std::ofstream copy(path_, std::ios::binary);
+    SC_THROW_IF(!copy, sc::core::Error,
+                "cannot write the temporary copy '" << path_ << "' of " << origin);
+    std::vector<char> buffer(1 << 20);
+    std::string head;
+    bool headerChecked = false;  // a file that is not a mesh is refused before it is copied
+    for (;;) {
+      const ssize_t n = ::read(fd, buffer.data(), buffer.size());
+      if (n < 0 && errno == EINTR) continue;
+      SC_THROW_IF(n < 0, sc::core::InputError,
+                  origin << " (Mesh/File) cannot be read: " << std::strerror(errno));
+      if (n == 0) break;
+      if (!headerChecked) {
+        head.append(buffer.data(), std::min<std::size_t>(static_cast<std::size_t>(n), 256));
+        checkHeader(head, origin, false);
+        headerChecked = headerComplete(head);
+      }
+      copy.write(buffer.data(), n);
+      SC_THROW_IF(!copy, sc::core::Error,
+                  "cannot write the temporary copy '" << path_ << "' of " << origin
+                                                      << " (disk full?)");
+    }
+    checkHeader(head, origin, true);
+  }
+  PrivateMeshCopy(const PrivateMeshCopy&) = delete;
+  PrivateMeshCopy& operator=(const PrivateMeshCopy&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::uintmax_t size() const { return size_; }
+
+private:
+  // The header is complete once its first two lines are there ("$MeshFormat", "4.1 0 8").
+  static bool headerComplete(const std::string& head)
+  {
+    const auto first = head.find('\n');
+    return first != std::string::npos && head.find('\n', first + 1) != std::string::npos;
+  }
+  // Throws unless `head` starts with the MSH header of format 2 or 4. With `final` = false (more
+  // bytes may follow) only what is already there is checked.
+  static void checkHeader(const std::string& head, const std::string& origin, bool final)
+  {
+    const std::string tag = "$MeshFormat";
+    auto fail = [&](const std::string& why) {
+      SC_THROW_IF(true, sc::core::InputError,
+                  origin << " (Mesh/File) is not a Gmsh MSH file: " << why
+                         << ". StressContact reads MSH files of format 2.2 and 4.1 (ASCII or "
+                            "binary), which start with the line '$MeshFormat'; it never hands "
+                            "other files to Gmsh, since Gmsh runs anything else as a .geo "
+                            "script (docs/mesh.md \"Gmsh files\")");
+    };
+    if (head.compare(0, 3, "\xEF\xBB\xBF") == 0)
+      fail("it starts with a UTF-8 byte-order mark; save it without one");
+    const std::size_t n = std::min(head.size(), tag.size());
+    if (head.compare(0, n, tag, 0, n) != 0 || (final && head.size() < tag.size())) {
+      std::string line = head.substr(0, head.find_first_of("\r\n"));
+      if (line.size() > 60) line = line.substr(0, 60) + "...";
+      for (char& c : line)
+        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+      fail(head.empty() ? std::string("the file is empty")
+                        : "its first line is '" + line + "', not '$MeshFormat'");
+    }
+    if (!headerComplete(head)) {
+      if (final) fail("the $MeshFormat section is incomplete");
+      return;
+    }
+    const auto first = head.find('\n');
+    std::string rest = head.substr(tag.size(), first - tag.size());
+    SC_THROW_IF(rest.find_first_not_of(" \t\r") != std::string::npos, sc::core::InputError,
+                origin << " (Mesh/File): the first line has text after '$MeshFormat'");
+    std::istringstream version(head.substr(first + 1));
+    double v = 0;
+    version >> v;
+    SC_THROW_IF(!version || !((v >= 2.0 && v < 3.0) || (v >= 4.0 && v < 5.0)),
+                sc::core::InputError,
+                origin << " (Mesh/File) has MSH format version '"
+                       << head.substr(first + 1, head.find_first_of("\r\n", first + 1) - first - 1)
+                       << "'; StressContact reads MSH formats 2.2 and 4.1");
+  }
+
+  // Removed with its content when the copy goes, also when the constructor throws.
+  struct TemporaryDirectory {
+    std::string path;
+    ~TemporaryDirectory()
+    {
+      std::error_code ec;
+      if (!path.empty()) std::filesystem::remove_all(path, ec);
+    }
+  } dir_;
+  std::string path_;
+  std::uintmax_t size_ = 0;
+};
+
+// The $PhysicalNames entries of an MSH file (ASCII in both the ASCII and the binary formats).
+// Gmsh keeps one group per name: of two groups given the same name, one silently loses its name
+// (and becomes a part called by its number), so duplicates are found in the file itself.
+void checkPhysicalNames(const std::string& path, const std::string& origin, int dim)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::map<std::string, int> tagOfName;  // boundary groups (dimension dim − 1)
+  while (std::getline(in, line)) {
+    if (line.rfind("$PhysicalNames", 0) != 0) continue;
+    int count = 0;
+    if (!(in >> count) || !std::getline(in, line)) return;  // Gmsh's reader reports it
+    for (int i = 0; i < count && std::getline(in, line); ++i) {
+      std::istringstream entry(line);
+      int d = -1, tag = 0;
+      entry >> d >> tag;
+      std::string name;
+      std::getline(entry, name);
+      const auto a = name.find('"'), b = name.rfind('"');
+      if (a == std::string::npos || b <= a) continue;
+      name = name.substr(a + 1, b - a - 1);
+      if (d != dim - 1) continue;
+      const auto [it, inserted] = tagOfName.emplace(name, tag);
+      SC_THROW_IF(!inserted && it->second != tag, sc::core::InputError,
+                  origin << ": physical groups " << it->second << " and " << tag
+                         << " (dimension " << d << ") are both named '" << name
+                         << "'; each boundary part needs a name of its own (merge the groups "
+                            "in Gmsh, or rename one)");
+    }
+  }
+}
+
+// Time limit of the child that test-reads a mesh file: generous for any real file (Gmsh reads
+// about 10 MB/s of ASCII MSH here), finite for a reader that spins.
+unsigned readerTimeLimit(std::uintmax_t bytes)
+{
+  return static_cast<unsigned>(std::min<std::uintmax_t>(60 + bytes / 100000, 3600));
 }
 
 std::string elementTypeName(int type)
@@ -187,6 +362,27 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
   // Boundary parts from physical groups of dimension dim−1.
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups, dim - 1);
+  // A group without a name is called by its number; a name that is another group's number
+  // would merge two groups into one part.
+  {
+    std::map<std::string, int> named;
+    for (const auto& [gd, gtag] : groups) {
+      std::string name;
+      gmsh::model::getPhysicalName(gd, gtag, name);
+      if (!name.empty()) named.emplace(name, gtag);
+    }
+    for (const auto& [gd, gtag] : groups) {
+      std::string name;
+      gmsh::model::getPhysicalName(gd, gtag, name);
+      const auto clash = named.find(std::to_string(gtag));
+      SC_THROW_IF(name.empty() && clash != named.end() && clash->second != gtag,
+                  sc::core::InputError,
+                  origin << ": physical group " << gtag << " has no name, so it is called '"
+                         << gtag << "', but physical group " << clash->second
+                         << " is named '" << clash->first
+                         << "' too; name group " << gtag << " or rename group " << clash->second);
+    }
+  }
   std::vector<std::string> names = partOrder;
   std::vector<int> bfv, bpart;
   for (const auto& [gd, gtag] : groups) {
@@ -294,28 +490,25 @@ void GmshMeshIO::writeGeometryMesh(const Geometry& geometry, double meshSize,
 Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
 {
   const std::string origin = "Gmsh file '" + path + "'";
-  {
-    std::error_code ec;
-    SC_THROW_IF(std::filesystem::is_directory(path, ec), sc::core::InputError,
-                origin << " (Mesh/File) is a directory, not a .msh file");
-    std::ifstream probe(path);
-    SC_THROW_IF(!probe, sc::core::InputError,
-                origin << " (Mesh/File) cannot be opened: no such file or no read permission");
-  }
-  if (const int died = gmshReaderDies(path); died != 0) {
+  const PrivateMeshCopy copy(path, origin);
+  checkPhysicalNames(copy.path(), origin, dim);
+  const unsigned limit = readerTimeLimit(copy.size());
+  if (const int died = gmshReaderDies(copy.path(), limit); died != 0) {
     std::ostringstream why;
-    if (died > 0)
-      why << "signal " << died << " (" << strsignal(died) << ")";
+    if (died == SIGALRM)
+      why << "Gmsh's reader did not finish within " << limit << " s";
+    else if (died > 0)
+      why << "Gmsh's reader crashed on it (signal " << died << " (" << strsignal(died) << "))";
     else
-      why << "exit status " << -died;
+      why << "Gmsh's reader crashed on it (exit status " << -died << ")";
     SC_THROW_IF(true, sc::core::InputError,
-                origin << " cannot be read: Gmsh's reader crashed on it (" << why.str()
-                       << "); the file is damaged or not a .msh file of format 2.2 or 4.1");
+                origin << " cannot be read: " << why.str()
+                       << "; the file is damaged or not a .msh file of format 2.2 or 4.1");
   }
   GmshSession session;
   try {
     sc::core::FloatingPointTrapsSuspended gmshReads;  // Gmsh's reader, as in buildGeometryModel
-    gmsh::open(path);
+    gmsh::open(copy.path());
   } catch (...) {
     SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());
   }

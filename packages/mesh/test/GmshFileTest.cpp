@@ -11,8 +11,12 @@
 
 #include <Teuchos_UnitTestHarness.hpp>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <sys/stat.h>
 
 namespace {
 
@@ -166,6 +170,106 @@ TEUCHOS_UNIT_TEST(GmshFile, UnnamedPhysicalGroupsAndUntaggedFaces)
   TEST_ASSERT(m->boundaryNames() == std::vector<std::string>({"5", "Unnamed"}));
   TEST_FLOATING_EQUALITY(m->boundaryMeasure("5"), 1.0, 1e-14);
   TEST_FLOATING_EQUALITY(m->boundaryMeasure("Unnamed"), 3.0, 1e-14);
+}
+
+// A mesh file is data (docs/mesh.md "Gmsh files"). Gmsh 4.8's gmsh::open runs any file whose
+// first line is not a known data header as a .geo script, whatever its name, and merges an
+// option file '<file>.opt' (a script too) beside the file it opens; a script can run shell
+// commands with SystemCall. Verified with Gmsh 4.8.4: both run the command when opened directly.
+TEUCHOS_UNIT_TEST(GmshFile, ScriptsInMeshFilesAreNeverRun)
+{
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::absolute("gmsh_scripts");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path marker = dir / "command_ran";
+  const std::string call = "SystemCall \"touch " + marker.string() + "\";\n";
+  // A script named .msh that would mesh a triangle after running the command.
+  const std::string script = call +
+      "Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {0, 1, 0, 0.5};\n"
+      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};\n"
+      "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\nMesh 2;\n";
+  const std::string evil = writeFile((dir / "evil.msh").string(), script);
+  expectInputError([&] { GmshMeshIO::readFile(evil, 2); },
+                   {"evil.msh", "is not a Gmsh MSH file", "its first line is 'SystemCall"},
+                   success, out);
+  TEST_ASSERT(!fs::exists(marker));
+  // The same after a comment line, and with a header that is not the first line.
+  expectInputError([&] { GmshMeshIO::readFile(writeFile((dir / "evil2.msh").string(),
+                                                        "// mesh\n$MeshFormat\n" + script), 2); },
+                   {"is not a Gmsh MSH file"}, success, out);
+  TEST_ASSERT(!fs::exists(marker));
+  // A real mesh with an option file beside it: the mesh is read, the option file is not run.
+  fs::copy_file(dataDir + "/half_disc_h0.25_v41.msh", dir / "good.msh");
+  writeFile((dir / "good.msh.opt").string(), call);
+  auto m = GmshMeshIO::readFile((dir / "good.msh").string(), 2);
+  TEST_ASSERT(m->numElements() > 0);
+  TEST_ASSERT(!fs::exists(marker));
+  // The private copy is removed after reading, also after an error (TMPDIR: a directory of this
+  // test's own, so that other tests reading meshes at the same time do not count).
+  const fs::path tmp = dir / "tmp";
+  fs::create_directories(tmp);
+  const char* oldTmp = std::getenv("TMPDIR");
+  const std::string saved = oldTmp ? oldTmp : "";
+  ::setenv("TMPDIR", tmp.c_str(), 1);
+  GmshMeshIO::readFile((dir / "good.msh").string(), 2);
+  expectInputError([&] { GmshMeshIO::readFile(evil, 2); }, {"is not a Gmsh MSH file"}, success, out);
+  if (oldTmp)
+    ::setenv("TMPDIR", saved.c_str(), 1);
+  else
+    ::unsetenv("TMPDIR");
+  TEST_ASSERT(fs::is_empty(tmp));
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, HeaderAndVersionAreChecked)
+{
+  expectInputError([] { GmshMeshIO::readFile(writeFile("empty.msh", ""), 2); },
+                   {"empty.msh", "the file is empty"}, success, out);
+  expectInputError([] { GmshMeshIO::readFile(writeFile("bom.msh", "\xEF\xBB\xBF" + std::string(kHeader)), 2); },
+                   {"bom.msh", "UTF-8 byte-order mark"}, success, out);
+  expectInputError([] { GmshMeshIO::readFile(writeFile("v1.msh", "$NOD\n3\n1 0 0 0\n$ENDNOD\n"), 2); },
+                   {"v1.msh", "its first line is '$NOD'"}, success, out);
+  expectInputError([] { GmshMeshIO::readFile(writeFile("v3.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n"), 2); },
+                   {"v3.msh", "MSH format version '3.0 0 8'"}, success, out);
+  expectInputError([] { GmshMeshIO::readFile(writeFile("cut.msh", "$MeshFormat\n"), 2); },
+                   {"cut.msh", "the $MeshFormat section is incomplete"}, success, out);
+}
+
+TEUCHOS_UNIT_TEST(GmshFile, NonRegularFilesAreRefused)
+{
+  // /dev/zero made Gmsh's reader spin forever; a FIFO would block the reader.
+  expectInputError([] { GmshMeshIO::readFile("/dev/zero", 2); },
+                   {"'/dev/zero'", "is not a regular file"}, success, out);
+  const std::string fifo = std::filesystem::absolute("mesh_fifo.msh").string();
+  std::filesystem::remove(fifo);
+  const int made = ::mkfifo(fifo.c_str(), 0600);
+  TEST_EQUALITY(made, 0);
+  expectInputError([&] { GmshMeshIO::readFile(fifo, 2); }, {"mesh_fifo.msh", "is not a regular file"},
+                   success, out);
+  std::filesystem::remove(fifo);
+}
+
+// Gmsh keeps one group per name: two groups named 'Top' used to become the part 'Top' and a part
+// called by the other's number, traction-free; a group without a name (called '3') and a group
+// named '3' used to merge into one part.
+TEUCHOS_UNIT_TEST(GmshFile, ClashingPhysicalNamesAreInputErrors)
+{
+  const std::string nodes = "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n";
+  std::string twice = std::string(kHeader) +
+                      "$PhysicalNames\n3\n1 1 \"Top\"\n1 2 \"Top\"\n2 9 \"Body\"\n$EndPhysicalNames\n" +
+                      nodes + "$Elements\n4\n1 1 2 1 1 1 2\n2 1 2 2 2 3 4\n3 2 2 9 1 1 2 3\n"
+                              "4 2 2 9 1 1 3 4\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("names_twice.msh", twice), 2); },
+                   {"names_twice.msh", "physical groups 1 and 2 (dimension 1) are both named 'Top'"},
+                   success, out);
+  std::string clash = std::string(kHeader) +
+                      "$PhysicalNames\n1\n1 1 \"3\"\n$EndPhysicalNames\n" + nodes +
+                      "$Elements\n4\n1 1 2 1 1 1 2\n2 1 2 3 2 3 4\n3 2 2 9 1 1 2 3\n"
+                      "4 2 2 9 1 1 3 4\n$EndElements\n";
+  expectInputError([&] { GmshMeshIO::readFile(writeFile("names_clash.msh", clash), 2); },
+                   {"names_clash.msh", "physical group 3 has no name, so it is called '3', but "
+                                       "physical group 1 is named '3' too"},
+                   success, out);
 }
 
 }  // namespace
