@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The talk's adaptive experiments on Hertz 2D (issue #9; docs/adaptivity.md).
+"""The talk's adaptive experiments on Hertz 2D (docs/adaptivity.md).
 
 Runs build/apps/stresscontact/stresscontact on input/hertz2d*.xml, writes one CSV per run under
 docs/adaptivity/ (cycle, DOFs, eta and its parts, the signed normal part, load P, half-width a,
@@ -25,8 +25,8 @@ PARTS = ["volume", "asymmetry", "oscillation", "contact_complementarity", "conta
          "contact_tension", "friction"]
 
 # name: (deck, --set overrides, nu). Every run pins Mesh/Geometry order = 1: the committed study
-# was made with straight-sided elements, before curved boundary elements became the default
-# (issue #11; docs/contact.md "Curved contact faces" compares the two).
+# was made with straight-sided elements (the default is curved; docs/contact.md "Curved contact
+# faces" compares the two).
 GEOMETRY = ["Mesh/Geometry order=1"]
 RUNS = {
     "frictionless_nu028_adaptive": ("hertz2d_frictionless.xml", ["Adaptivity/Cycles=26"], 0.28),

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The talk's 3D example, adaptive (issue #9; docs/adaptivity.md "Hertz 3D, adaptive").
+"""The talk's 3D example, adaptive (docs/adaptivity.md "Hertz 3D, adaptive").
 
 Half ball of radius 1 on a rigid plane, u_D = (0, 0, -0.025) on the top, E = 2.5, nu = 0.25,
 Coulomb mu_F = 0.4 (input/hertz3d.xml) and its frictionless twin (input/hertz3d_frictionless.xml),

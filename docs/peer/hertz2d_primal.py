@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent primal verification of the Hertz 2D contact load (StressContact issue #11, item 3).
+"""Independent primal verification of the Hertz 2D contact load (StressContact, docs/peer/README.md).
 
 Peer code: GetFEM (Debian package python3-getfem), P2 displacements on isoparametric P2
 (curved) triangles, plane strain, E = 20600, nu = 0.28.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cost per phase of the adaptive loop (issue #9): seconds per cycle for solve, reconstruct,
+"""Cost per phase of the adaptive loop (docs/benchmarks.md): seconds per cycle for solve, reconstruct,
 estimate, mark, refine, transfer, output, and the peak resident memory, read from the
 `timings` and `memory` records of summary.json (docs/output.md).
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hertz 2D in both contact frames (issue #11, docs/contact.md "Contact model").
+"""Hertz 2D in both contact frames (docs/contact.md "Contact model").
 
 Runs build/apps/stresscontact/stresscontact on input/hertz2d_frictionless.xml and
 input/hertz2d.xml with local refinement towards the contact zone, with straight-sided (Mesh/
