@@ -1,0 +1,322 @@
+#!/usr/bin/python3
+"""Plot a finished (or running) StressContact run from its output directory.
+
+    scripts/plot-run.py OUTPUT_DIR [--cycle N]
+
+Reads only what the run wrote (docs/output.md): summary.json, contact_cycle<N>.csv and the
+<Base name>.xdmf with its .h5 files. Writes PNG files into OUTPUT_DIR/plots/:
+
+  eta.png              η (η_CF with contact) and each of its parts against the DOFs, log-log, with
+                       the optimal slope DOFs^(-(k+1)/d) for the run's degree k and dimension d,
+                       and the true error where the run has an exact solution.
+  contact_traction.png (runs with contact) the normal pressure −σ_N and the tangential traction of
+                       every contact point of the last cycle (or --cycle N) against the position
+                       along the obstacle plane from the zone's middle (2D) or the distance from
+                       the point of largest pressure (3D), both in the obstacle plane,
+                       coloured by status (free, stick, slip); Hertz's profile when summary.json
+                       has Hertz reference values (frictionless Half disc / Half ball runs) and the
+                       Coulomb bound μ_F|σ_N| with Coulomb friction.
+  mesh_eta.png         (2D, needs h5py) the mesh of that cycle coloured by the error indicator η_T.
+
+Material, geometry and friction data come from the run's own summary.json (its "parameters"),
+nothing is assumed. Needs matplotlib (Debian: python3-matplotlib); h5py (python3-h5py) only for
+mesh_eta.png.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+# Parts of "eta" in summary.json that are not parts of η (docs/output.md "summary.json").
+NOT_PARTS = {"total", "contact_normal_signed", "stress_energy_norm", "relative", "stress_energy_error",
+             "efficiency_index", "marked_elements", "stop_reason"}
+STATUS_COLOURS = {"free": "0.6", "stick": "tab:red", "slip": "tab:blue"}
+
+
+def load_summary(directory):
+    path = os.path.join(directory, "summary.json")
+    if not os.path.exists(path):
+        sys.exit(f"plot-run: no summary.json in {directory}")
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def param(summary, *keys, default=None):
+    node = summary.get("parameters", {})
+    for k in keys:
+        if not isinstance(node, dict) or k not in node:
+            return default
+        node = node[k]
+    return node
+
+
+def plot_eta(summary, plt, out):
+    cycles = [c for c in summary.get("cycles", [])
+              if isinstance(c.get("eta"), dict) and c["eta"].get("total") is not None
+              and c.get("dofs", {}).get("total")]
+    if not cycles:
+        print("plot-run: no estimated cycle in summary.json: eta.png skipped")
+        return None
+    dofs = [c["dofs"]["total"] for c in cycles]
+    fig, ax = plt.subplots(figsize=(7, 5))
+    eta = [c["eta"]["total"] for c in cycles]
+    ax.loglog(dofs, eta, "o-", color="black", lw=2, label="η (total)")
+    parts = []
+    for c in cycles:
+        for k, v in c["eta"].items():
+            if k not in NOT_PARTS and isinstance(v, (int, float)) and k not in parts:
+                parts.append(k)
+    for k in parts:
+        pts = [(n, c["eta"].get(k)) for n, c in zip(dofs, cycles)]
+        # a part that stays at round-off against η (e.g. the oscillation of zero data) is left out
+        pts = [(n, v) for (n, v), e in zip(pts, eta) if isinstance(v, (int, float)) and v > 1e-10 * e]
+        if len(pts) >= 1:
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], ".--", lw=1, label=k.replace("_", " "))
+    errors = [(n, c["eta"].get("stress_energy_error")) for n, c in zip(dofs, cycles)]
+    errors = [(n, e) for n, e in errors if isinstance(e, (int, float)) and e > 0]
+    if errors:
+        ax.loglog([e[0] for e in errors], [e[1] for e in errors], "s-", color="tab:green",
+                  label="‖A^{1/2}(σ − σ_h)‖ (exact solution)")
+    k = param(summary, "Discretization", "Degree", default=None)
+    d = param(summary, "Problem", "Dimension", default=None)
+    if k and d and len(dofs) > 1 and dofs[-1] > dofs[0]:
+        slope = (k + 1) / d
+        ref = [eta[-1] * (n / dofs[-1]) ** (-slope) for n in (dofs[0], dofs[-1])]
+        ax.loglog([dofs[0], dofs[-1]], ref, ":", color="0.4", label=f"DOFs^(−{slope:.3g}) (optimal, k = {k})")
+    if len(dofs) > 2:
+        tail = list(zip(dofs, eta))[-min(8, len(dofs)):]
+        xs, ys = [math.log(n) for n, _ in tail], [math.log(e) for _, e in tail]
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        sxx = sum((x - mx) ** 2 for x in xs)
+        if sxx > 0:
+            rate = -sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
+            ax.set_title(f"η against DOFs: fitted rate {rate:.2f} over the last {len(tail)} cycles")
+    ax.set_xlabel("DOFs")
+    ax.set_ylabel("estimate")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out, "eta.png")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def last_contact_csv(directory, cycle):
+    files = {}
+    for name in os.listdir(directory):
+        m = re.fullmatch(r"contact_cycle(\d+)\.csv", name)
+        if m:
+            files[int(m.group(1))] = os.path.join(directory, name)
+    if not files:
+        return None, None
+    if cycle is None:
+        cycle = max(files)
+    return cycle, files.get(cycle)
+
+
+def plot_contact(summary, directory, cycle, plt, out):
+    cycle, path = last_contact_csv(directory, cycle)
+    if path is None:
+        print("plot-run: no contact_cycle<N>.csv for that cycle: contact_traction.png skipped")
+        return None
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        print(f"plot-run: {path} has no contact points: contact_traction.png skipped")
+        return None
+    dim = 3 if "z" in rows[0] else 2
+    coords = ["x", "y", "z"][:dim]
+    x = [[float(r[c]) for c in coords] for r in rows]
+    sn = [float(r["sigma_n"]) for r in rows]
+    st = [float(r["sigma_t"]) for r in rows]
+    if dim == 3:
+        st = [math.hypot(a, float(r["sigma_t2"])) for a, r in zip(st, rows)]
+    status = [r.get("status", "") for r in rows]
+    pressure = [-v for v in sn]
+
+    normal = param(summary, "Contact", "Obstacle normal", default=None)
+    if not normal or len(normal) != dim or not any(normal):
+        normal = [0.0] * (dim - 1) + [1.0]
+    nn = math.sqrt(sum(v * v for v in normal))
+    normal = [v / nn for v in normal]
+
+    def in_plane(p):
+        h = sum(a * b for a, b in zip(p, normal))
+        return [a - h * b for a, b in zip(p, normal)]
+
+    # centre of the zone, in the plane. 2D: the middle between the outermost active points (all
+    # points when none is active); a mean would be biased by the uneven point density. 3D: the
+    # point of largest pressure (a ragged zone edge and coinciding control points make the box
+    # or the mean of the active points a poor centre on coarse meshes).
+    if dim == 2:
+        active_x = [in_plane(p) for p, s in zip(x, status) if s in ("stick", "slip")] or [in_plane(p) for p in x]
+        centre = in_plane([0.5 * (min(p[j] for p in active_x) + max(p[j] for p in active_x))
+                           for j in range(dim)])
+    else:
+        centre = in_plane(x[max(range(len(x)), key=lambda i: pressure[i])])
+    if dim == 2:
+        tangent = [-normal[1], normal[0]]
+        pos = [sum((a - c) * t for a, c, t in zip(in_plane(p), centre, tangent)) for p in x]
+        xlabel = "position along the obstacle plane (from the middle of the contact zone)"
+    else:
+        pos = [math.sqrt(sum((a - c) ** 2 for a, c in zip(in_plane(p), centre))) for p in x]
+        xlabel = "distance from the point of largest pressure, in the obstacle plane"
+
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
+    for s in sorted(set(status)):
+        idx = [i for i, v in enumerate(status) if v == s]
+        colour = STATUS_COLOURS.get(s, "tab:orange")
+        ax1.plot([pos[i] for i in idx], [pressure[i] for i in idx], ".", color=colour, ms=4,
+                 label=s or "points")
+        ax2.plot([pos[i] for i in idx], [st[i] for i in idx], ".", color=colour, ms=4, label=s or "points")
+
+    entry = next((c for c in summary.get("cycles", []) if c.get("cycle") == cycle), None)
+    contact = (entry or {}).get("contact") or {}
+    hertz = contact.get("hertz") or {}
+    a = hertz.get("half_width", hertz.get("radius"))
+    p0 = hertz.get("max_pressure")
+    if a and p0:
+        n = 200
+        lo = -a if dim == 2 else 0.0
+        xs = [lo + (a - lo) * i / n for i in range(n + 1)]
+        ax1.plot(xs, [p0 * math.sqrt(max(0.0, 1 - (v / a) ** 2)) for v in xs], "-", color="black",
+                 lw=1, label=f"Hertz from the run's load (a = {a:.4g}, p₀ = {p0:.4g})")
+    law = param(summary, "Contact", "Friction law", default="None")
+    mu = param(summary, "Contact", "Friction coefficient", default=0.0) or 0.0
+    if law == "Coulomb" and mu > 0:
+        label = f"μ_F|σ_N| (μ_F = {mu:g})"
+        if dim == 2:  # a line through the points, both signs
+            order = sorted(range(len(pos)), key=lambda i: pos[i])
+            ax2.plot([pos[i] for i in order], [mu * pressure[i] for i in order], "-", color="0.3",
+                     lw=0.8, label=label)
+            ax2.plot([pos[i] for i in order], [-mu * pressure[i] for i in order], "-", color="0.3", lw=0.8)
+        else:  # in 3D several points share a distance: the bound of each point
+            ax2.plot(pos, [mu * p for p in pressure], "_", color="0.3", ms=5, label=label)
+    force = contact.get("force")
+    title = f"contact tractions, cycle {cycle}"
+    if force:
+        title += f" (force {', '.join(f'{v:.6g}' for v in force)})"
+    ax1.set_title(title)
+    ax1.set_ylabel("normal pressure −σ_N")
+    ax2.set_ylabel("tangential traction σ_T" if dim == 2 else "|σ_T|")
+    ax2.set_xlabel(xlabel)
+    for ax in (ax1, ax2):
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    active = [p for p, s in zip(pos, status) if s in ("stick", "slip")]
+    if active:  # zoom on the zone (the free points extend over the whole contact boundary)
+        span = max(abs(v) for v in active)
+        ax2.set_xlim((-1.5 * span if dim == 2 else 0.0), 1.5 * span)
+    fig.tight_layout()
+    path = os.path.join(out, "contact_traction.png")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def xdmf_step(directory, summary, cycle):
+    """(h5 path, topology path, geometry path, eta path or None) of the domain grid of a cycle
+    (the last step when cycle is None), read from the .xdmf."""
+    base = param(summary, "Output", "Base name", default="solution")
+    xdmf = os.path.join(directory, base + ".xdmf")
+    if not os.path.exists(xdmf):
+        return None
+    steps = [g for g in ET.parse(xdmf).getroot().iter("Grid")
+             if g.get("CollectionType") == "Spatial"]
+    if not steps:
+        return None
+    step = steps[-1]
+    if cycle is not None:
+        step = next((g for g in steps if g.get("Name") == f"cycle {cycle}"), None)
+        if step is None:
+            return None
+    domain = next((g for g in step.findall("Grid") if g.get("Name") == "domain"), None)
+    if domain is None:
+        return None
+
+    def item(node):
+        text = node.find("DataItem").text.strip() if node is not None and node.find("DataItem") is not None else None
+        return text.split(":", 1) if text and ":" in text else None
+
+    topo = item(domain.find("Topology"))
+    geom = item(domain.find("Geometry"))
+    eta = next((a for a in domain.findall("Attribute") if a.get("Name") == "eta"), None)
+    return topo, geom, item(eta), step.get("Name")
+
+
+def plot_mesh(summary, directory, cycle, plt, out):
+    if param(summary, "Problem", "Dimension", default=2) != 2:
+        return None
+    try:
+        import h5py
+    except ImportError:
+        print("plot-run: h5py is not installed (python3-h5py): mesh_eta.png skipped")
+        return None
+    found = xdmf_step(directory, summary, cycle)
+    if not found or not found[0] or not found[1]:
+        print("plot-run: no .xdmf step with a domain grid: mesh_eta.png skipped")
+        return None
+    (tfile, tpath), (gfile, gpath), eta_item, name = found
+    with h5py.File(os.path.join(directory, tfile), "r") as f:
+        cells = f[tpath][()]
+    with h5py.File(os.path.join(directory, gfile), "r") as f:
+        xyz = f[gpath][()]
+    eta = None
+    if eta_item:
+        with h5py.File(os.path.join(directory, eta_item[0]), "r") as f:
+            eta = f[eta_item[1]][()]
+    import matplotlib.tri as mtri
+    tri = mtri.Triangulation(xyz[:, 0], xyz[:, 1], cells)
+    dx = float(xyz[:, 0].max() - xyz[:, 0].min()) or 1.0
+    dy = float(xyz[:, 1].max() - xyz[:, 1].min()) or 1.0
+    fig, ax = plt.subplots(figsize=(8, min(8.0, max(3.0, 6.5 * dy / dx + 1.0))))
+    if eta is not None and len(eta) == len(cells):
+        positive = eta[eta > 0]
+        from matplotlib.colors import LogNorm
+        lo = sorted(positive)[len(positive) // 100] if len(positive) else 0.0  # 1st percentile
+        norm = LogNorm(vmin=max(lo, positive.max() * 1e-6), vmax=positive.max()) if len(positive) else None
+        pc = ax.tripcolor(tri, facecolors=eta.clip(min=positive.min() if len(positive) else 0), norm=norm,
+                          cmap="viridis", edgecolors="none")
+        fig.colorbar(pc, ax=ax, label="η_T")
+    ax.triplot(tri, color="black", lw=0.1, alpha=0.4)
+    ax.set_aspect("equal")
+    ax.set_title(f"mesh and error indicator, {name} ({len(cells)} elements)")
+    fig.tight_layout()
+    path = os.path.join(out, "mesh_eta.png")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     epilog="Writes OUTPUT_DIR/plots/*.png (docs/output.md \"Plotting a run\").")
+    parser.add_argument("output_dir", metavar="OUTPUT_DIR", help="a run's output directory")
+    parser.add_argument("--cycle", type=int, default=None,
+                        help="cycle of the contact and mesh plots (default: the last one written)")
+    args = parser.parse_args()
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        sys.exit("plot-run: matplotlib is not installed for " + sys.executable + " (Debian: apt-get install python3-matplotlib, then run with /usr/bin/python3)")
+    summary = load_summary(args.output_dir)
+    out = os.path.join(args.output_dir, "plots")
+    os.makedirs(out, exist_ok=True)
+    written = [p for p in (plot_eta(summary, plt, out),
+                           plot_contact(summary, args.output_dir, args.cycle, plt, out),
+                           plot_mesh(summary, args.output_dir, args.cycle, plt, out)) if p]
+    for p in written:
+        print("wrote", p)
+    return 0 if written else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
