@@ -2,6 +2,9 @@
 
 #include <sc/core/Error.hpp>
 #include <sc/core/FloatingPointTraps.hpp>
+#include <sc/mesh/CadGeometry.hpp>
+#include <sc/mesh/GmshSession.hpp>
+#include <sc/mesh/MeshBoundaryGeometry.hpp>
 
 #include <gmsh.h>
 
@@ -26,38 +29,7 @@ namespace sc::mesh {
 
 namespace {
 
-// Gmsh keeps global state: one session per call, finalised even when we throw.
-class GmshSession {
-public:
-  GmshSession()
-  {
-    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.Verbosity", 1);
-    gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::logger::start();  // keeps error messages for our exceptions
-  }
-  ~GmshSession()
-  {
-    try {
-      gmsh::logger::stop();
-      gmsh::finalize();
-    } catch (...) {
-    }
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-};
-
-std::string lastGmshError()
-{
-  std::string err;
-  try {
-    gmsh::logger::getLastError(err);
-  } catch (...) {
-  }
-  return err.empty() ? std::string("(Gmsh gave no message)") : err;
-}
+std::string lastGmshError() { return GmshSession::lastError(); }
 
 // Gmsh 4.8's .msh readers trust the file: a damaged $Nodes or $Elements section can make them
 // read out of bounds and crash (found by fuzzing: a SEGV in GModel::getMeshVertexByTag from
@@ -88,7 +60,7 @@ int gmshReaderDies(const std::string& path, unsigned timeLimitSeconds)
     try {
       GmshSession session;
       sc::core::FloatingPointTrapsSuspended gmshReads;
-      gmsh::open(path);
+      gmsh::merge(path);
       std::vector<int> types;
       std::vector<std::vector<std::size_t>> elemTags, nodeTags;
       gmsh::model::mesh::getElements(types, elemTags, nodeTags, -1, -1);
@@ -290,34 +262,57 @@ std::string elementTypeName(int type)
   return "'" + name + "' (Gmsh element type " + std::to_string(type) + ")";
 }
 
-// Build a SimplexMesh from the mesh of the current Gmsh model: elements of dimension `dim`,
-// boundary parts from the physical groups of dimension dim−1 (in the order of `partOrder` if
-// given, else by group tag).
-Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
-                                      const std::vector<std::string>& partOrder)
+// Nodes of a Gmsh element type and whether StressContact reads it: linear or quadratic simplices
+// of the mesh's dimension (elements) and of one less (boundary faces).
+struct TypeInfo {
+  int nodes = 0;      // nodes per element
+  int vertices = 0;   // of which vertices (listed first)
+  bool supported = false;
+};
+TypeInfo typeInfo(int type, int dim, bool face)
 {
-  const int linearType = dim == 2 ? 2 : 4;  // 3-node triangle, 4-node tetrahedron
-  const int faceType = dim == 2 ? 1 : 2;    // 2-node line, 3-node triangle
+  const int d = face ? dim - 1 : dim;
+  switch (type) {
+    case 1: return {2, 2, d == 1};   // 2-node line
+    case 8: return {3, 2, d == 1};   // 3-node line
+    case 2: return {3, 3, d == 2};   // 3-node triangle
+    case 9: return {6, 3, d == 2};   // 6-node triangle
+    case 4: return {4, 4, d == 3};   // 4-node tetrahedron
+    case 11: return {10, 4, d == 3}; // 10-node tetrahedron
+    default: return {};
+  }
+}
 
+// Build a SimplexMesh from the mesh of the current Gmsh model: elements of dimension `dim`
+// (linear or quadratic; a quadratic element contributes its vertices), boundary parts from the
+// physical groups of dimension dim−1 (in the order of `partOrder` if given, else by group tag),
+// and the boundary's geometry from the groups' faces (their mid-edge nodes for quadratic faces).
+GmshMeshIO::MeshFile extractMesh(int dim, const std::string& origin,
+                                 const std::vector<std::string>& partOrder)
+{
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> elemTags, nodeTags;
   gmsh::model::mesh::getElements(types, elemTags, nodeTags, dim, -1);
   std::vector<std::size_t> elemNodes;
   SimplexMesh::Labels labels;  // Gmsh tags, quoted in error messages
   for (std::size_t t = 0; t < types.size(); ++t) {
-    SC_THROW_IF(types[t] != linearType, sc::core::InputError,
+    const TypeInfo info = typeInfo(types[t], dim, false);
+    SC_THROW_IF(!info.supported, sc::core::InputError,
                 origin << ": unsupported element type " << elementTypeName(types[t]) << " (element "
                        << (elemTags[t].empty() ? 0 : elemTags[t][0])
-                       << "); StressContact reads linear "
-                       << (dim == 2 ? "3-node triangles" : "4-node tetrahedra") << " only");
-    elemNodes.insert(elemNodes.end(), nodeTags[t].begin(), nodeTags[t].end());
+                       << "); StressContact reads linear or quadratic "
+                       << (dim == 2 ? "triangles (3 or 6 nodes)" : "tetrahedra (4 or 10 nodes)")
+                       << " only");
+    for (std::size_t e = 0; e < elemTags[t].size(); ++e)
+      elemNodes.insert(elemNodes.end(), nodeTags[t].begin() + e * info.nodes,
+                       nodeTags[t].begin() + e * info.nodes + info.vertices);
     labels.element.insert(labels.element.end(), elemTags[t].begin(), elemTags[t].end());
   }
   SC_THROW_IF(elemNodes.empty(), sc::core::InputError,
               origin << ": the file has no " << (dim == 2 ? "triangles" : "tetrahedra")
                      << " (empty or truncated file, or a mesh of another dimension)");
 
-  // Nodes used by elements, numbered 0.. in order of first appearance.
+  // Vertices used by elements, numbered 0.. in order of first appearance.
   std::unordered_map<std::size_t, int> index;
   index.reserve(elemNodes.size());
   std::vector<int> elemVerts(elemNodes.size());
@@ -330,6 +325,9 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
   std::vector<std::size_t> allTags;
   std::vector<double> allCoords, params;
   gmsh::model::mesh::getNodes(allTags, allCoords, params, -1, -1, true, false);
+  std::unordered_map<std::size_t, std::size_t> position;  // node tag -> its index in allTags
+  position.reserve(allTags.size());
+  for (std::size_t i = 0; i < allTags.size(); ++i) position.emplace(allTags[i], i);
   std::vector<double> coords(usedTags.size() * dim, std::nan(""));
   // A coordinate "nan" or "inf" in the file (Gmsh's reader accepts both) is refused before any
   // arithmetic: it would make every measure and check of the mesh NaN.
@@ -385,6 +383,9 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
   }
   std::vector<std::string> names = partOrder;
   std::vector<int> bfv, bpart;
+  const int faceNodes = MeshBoundaryGeometry::nodesPerFace(dim);
+  std::vector<double> boundaryNodes;      // the faces' nodes for the boundary geometry
+  std::vector<std::size_t> boundaryTags;  // and their Gmsh tags (messages)
   for (const auto& [gd, gtag] : groups) {
     std::string name;
     gmsh::model::getPhysicalName(gd, gtag, name);
@@ -399,24 +400,54 @@ Teuchos::RCP<SimplexMesh> extractMesh(int dim, const std::string& origin,
       std::vector<std::vector<std::size_t>> fTags, fNodes;
       gmsh::model::mesh::getElements(ft, fTags, fNodes, dim - 1, ent);
       for (std::size_t t = 0; t < ft.size(); ++t) {
-        SC_THROW_IF(ft[t] != faceType, sc::core::InputError,
+        const TypeInfo info = typeInfo(ft[t], dim, true);
+        SC_THROW_IF(!info.supported, sc::core::InputError,
                     origin << ": physical group '" << name << "' holds unsupported element type "
                            << elementTypeName(ft[t]));
-        for (std::size_t i = 0; i < fNodes[t].size(); ++i) {
-          auto it = index.find(fNodes[t][i]);
-          SC_THROW_IF(it == index.end(), sc::core::InputError,
-                      origin << ": boundary element " << fTags[t][i / dim] << " of physical group '"
-                             << name << "' uses node " << fNodes[t][i]
-                             << ", which belongs to no " << (dim == 2 ? "triangle" : "tetrahedron"));
-          bfv.push_back(it->second);
+        for (std::size_t e = 0; e < fTags[t].size(); ++e) {
+          const std::size_t* n = &fNodes[t][e * info.nodes];
+          std::array<double, 18> x{};  // up to 6 nodes
+          for (int i = 0; i < info.nodes; ++i) {
+            auto it = index.find(n[i]);
+            SC_THROW_IF(i < info.vertices && it == index.end(), sc::core::InputError,
+                        origin << ": boundary element " << fTags[t][e] << " of physical group '"
+                               << name << "' uses node " << n[i] << ", which belongs to no "
+                               << (dim == 2 ? "triangle" : "tetrahedron"));
+            if (i < info.vertices) bfv.push_back(it->second);
+            const auto p = position.find(n[i]);
+            SC_THROW_IF(p == position.end(), sc::core::InputError,
+                        origin << ": boundary element " << fTags[t][e] << " of physical group '"
+                               << name << "' uses node " << n[i] << ", which has no coordinates");
+            for (int k = 0; k < 3; ++k) x[3 * i + k] = allCoords[3 * p->second + k];
+            SC_THROW_IF(!(std::isfinite(x[3 * i]) && std::isfinite(x[3 * i + 1]) &&
+                          std::isfinite(x[3 * i + 2])),
+                        sc::core::InputError,
+                        origin << ": node " << n[i] << " has a non-finite coordinate");
+          }
+          if (info.nodes == info.vertices) {  // linear face: midpoints on the chords
+            constexpr int kEdges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+            for (int s = 0; s < (dim == 2 ? 1 : 3); ++s)
+              for (int k = 0; k < 3; ++k)
+                x[3 * (info.vertices + s) + k] =
+                    0.5 * (x[3 * kEdges[s][0] + k] + x[3 * kEdges[s][1] + k]);
+          }
+          boundaryNodes.insert(boundaryNodes.end(), x.begin(), x.begin() + 3 * faceNodes);
+          for (int i = 0; i < faceNodes; ++i)
+            boundaryTags.push_back(i < info.nodes ? n[i] : 0);
         }
         bpart.insert(bpart.end(), fTags[t].size(), part);
       }
     }
   }
   labels.vertex = usedTags;
-  return Teuchos::rcp(new SimplexMesh(dim, std::move(coords), std::move(elemVerts), bfv, bpart,
-                                      names, origin, &labels));
+  GmshMeshIO::MeshFile result;
+  result.mesh = Teuchos::rcp(new SimplexMesh(dim, std::move(coords), std::move(elemVerts), bfv,
+                                             bpart, names, origin, &labels));
+  // Parts as the mesh names them (a mesh adds 'Unnamed' for faces in no group: flat, no faces).
+  result.boundary = Teuchos::rcp(new MeshBoundaryGeometry(dim, result.mesh->boundaryNames(),
+                                                          std::move(boundaryNodes), bpart, origin,
+                                                          &boundaryTags));
+  return result;
 }
 
 void buildGeometryModel(const Geometry& geometry, double meshSize)
@@ -426,7 +457,6 @@ void buildGeometryModel(const Geometry& geometry, double meshSize)
   // that is Gmsh's business, so traps are off while it builds the mesh.
   sc::core::FloatingPointTrapsSuspended gmshComputes;
   const int dim = geometry.dim();
-  gmsh::model::add("scene");
   geometry.addToGmshModel();
   gmsh::vectorpair bents;
   gmsh::model::getEntities(bents, dim - 1);
@@ -475,19 +505,28 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::meshGeometry(const Geometry& geometry, dou
     SC_THROW_IF(true, sc::core::InternalError,
                 origin << ": Gmsh failed to mesh the scene: " << lastGmshError());
   }
-  return extractMesh(geometry.dim(), origin, geometry.boundaryNames());
+  return extractMesh(geometry.dim(), origin, geometry.boundaryNames()).mesh;
 }
 
 void GmshMeshIO::writeGeometryMesh(const Geometry& geometry, double meshSize,
-                                   const std::string& path, double version)
+                                   const std::string& path, double version, int order)
 {
   GmshSession session;
   buildGeometryModel(geometry, meshSize);
+  if (order > 1) {
+    sc::core::FloatingPointTrapsSuspended gmshComputes;
+    gmsh::model::mesh::setOrder(order);
+  }
   gmsh::option::setNumber("Mesh.MshFileVersion", version);
   gmsh::write(path);
 }
 
 Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
+{
+  return readMeshFile(path, dim).mesh;
+}
+
+GmshMeshIO::MeshFile GmshMeshIO::readMeshFile(const std::string& path, int dim)
 {
   const std::string origin = "Gmsh file '" + path + "'";
   const PrivateMeshCopy copy(path, origin);
@@ -508,13 +547,12 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
   GmshSession session;
   try {
     sc::core::FloatingPointTrapsSuspended gmshReads;  // Gmsh's reader, as in buildGeometryModel
-    gmsh::open(copy.path());
+    gmsh::merge(copy.path());
   } catch (...) {
     SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());
   }
-  std::string err;
-  gmsh::logger::getLastError(err);
-  SC_THROW_IF(!err.empty(), sc::core::InputError, origin << " cannot be read: " << err);
+  SC_THROW_IF(GmshSession::hasError(), sc::core::InputError,
+              origin << " cannot be read: " << lastGmshError());
   const int modelDim = gmsh::model::getDimension();
   SC_THROW_IF(modelDim != dim, sc::core::InputError,
               origin << " holds a mesh of dimension " << modelDim << " but Problem/Dimension = "
@@ -526,6 +564,35 @@ Teuchos::RCP<SimplexMesh> GmshMeshIO::readFile(const std::string& path, int dim)
   } catch (...) {
     SC_THROW_IF(true, sc::core::InputError, origin << " cannot be read: " << lastGmshError());
   }
+}
+
+Teuchos::RCP<SimplexMesh> GmshMeshIO::meshCad(const CadGeometry& cad, double meshSize, int order)
+{
+  SC_THROW_IF(!(meshSize > 0), sc::core::InputError,
+              "Mesh/Initial mesh size = " << meshSize << " must be > 0");
+  const std::string origin = "Gmsh geometry '" + cad.path() + "'";
+  cad.session().activate();
+  GmshSession::clearErrors();
+  try {
+    sc::core::FloatingPointTrapsSuspended gmshComputes;
+    // Mesh/Initial mesh size caps the element size; sizes that the script gives its points
+    // (grading towards a contact zone, say) still apply.
+    gmsh::option::setNumber("Mesh.MeshSizeMax", meshSize);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::model::mesh::clear();
+    gmsh::model::mesh::generate(cad.dim());
+    if (order > 1) gmsh::model::mesh::setOrder(order);
+  } catch (...) {
+    gmsh::model::mesh::clear();
+    SC_THROW_IF(true, sc::core::InputError,
+                origin << ": Gmsh cannot mesh the geometry: " << lastGmshError());
+  }
+  SC_THROW_IF(GmshSession::hasError(), sc::core::InputError,
+              origin << ": Gmsh cannot mesh the geometry: " << lastGmshError());
+  auto mesh = extractMesh(cad.dim(), origin, cad.boundaryNames()).mesh;
+  gmsh::model::mesh::clear();  // the model stays for the projections, its mesh goes
+  return mesh;
 }
 
 }  // namespace sc::mesh

@@ -4,6 +4,7 @@
 #include <sc/core/Parameters.hpp>
 #include <sc/mesh/BoundarySimplexSplit.hpp>
 #include <sc/mesh/BoxGeometry.hpp>
+#include <sc/mesh/CadGeometry.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
 #include <sc/mesh/HalfBallGeometry.hpp>
 #include <sc/mesh/HalfDiscGeometry.hpp>
@@ -18,8 +19,8 @@ namespace sc::mesh {
 
 const std::vector<std::string>& MeshFactory::sources()
 {
-  static const std::vector<std::string> s = {"Half disc", "Half ball", "Unit square",
-                                             "Unit cube", "Rectangle", "Gmsh file"};
+  static const std::vector<std::string> s = {"Half disc", "Half ball", "Unit square", "Unit cube",
+                                             "Rectangle", "Gmsh file", "Gmsh geometry"};
   return s;
 }
 
@@ -30,7 +31,12 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
     auto p = Teuchos::rcp(new Teuchos::ParameterList("Mesh"));
     sc::core::declareChoice(*p, "Source", "Half disc", sources(),
                             "Domain: a scene geometry (Half disc, Half ball: Hertz 2D/3D; Unit "
-                            "square/cube, Rectangle: manufactured) or a Gmsh .msh file (Mesh/File)");
+                            "square/cube, Rectangle: manufactured), a Gmsh .msh mesh file read as "
+                            "data (Gmsh file; linear, or quadratic for curved boundaries), or a "
+                            "Gmsh .geo script that Gmsh runs and meshes (Gmsh geometry: the script "
+                            "is a program and may merge CAD files; refinement places new boundary "
+                            "vertices on its CAD entities). Mesh/File names the file "
+                            "(docs/mesh.md 'Curved boundaries from files')");
     sc::core::declareReal(*p, "Initial mesh size", 0.25,
                           "Target element size of the initial Gmsh mesh (Gmsh Mesh.MeshSizeMax)",
                           0.0, /*lowerOpen=*/true);
@@ -46,20 +52,23 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
                           "(docs/mesh.md, 'Resource limits')",
                           0.0, /*lowerOpen=*/false);
     sc::core::declareBool(*p, "Project boundary", true,
-                          "Project new vertices on curved boundaries (Arc, Cap) onto the exact "
-                          "circle/sphere; false keeps the initial polygonal boundary");
+                          "Project new vertices on curved boundaries onto the exact boundary: the "
+                          "circle/sphere of Arc, Cap; a Gmsh geometry's CAD entities; a quadratic "
+                          "Gmsh file's curved faces. false keeps the initial polygonal boundary");
     sc::core::declareInt(*p, "Geometry order", 2,
                          "2: quadratic (isoparametric) elements at the scene's curved boundaries "
-                         "(Arc, Cap), their edge midpoints on the exact circle/sphere, mapped by the "
+                         "(Arc, Cap, a Gmsh geometry's or a quadratic Gmsh file's curved parts), "
+                         "their edge midpoints on the exact boundary, mapped by the "
                          "non-affine Piola maps (docs/mesh.md, 'Curved elements'); needs Project "
-                         "boundary = true; no effect on scenes without curved parts or on Gmsh "
-                         "files. 1: straight-sided (affine) elements everywhere (the talk's "
+                         "boundary = true; no effect on scenes without curved parts or on linear "
+                         "Gmsh files. 1: straight-sided (affine) elements everywhere (the talk's "
                          "'straight boundaries' study, with Project boundary = false)",
                          1, 2);
     sc::core::declareReal(*p, "Radius", 1.0, "Radius R of the Half disc / Half ball", 0.0, true);
     sc::core::declareString(*p, "File", "",
-                            "Gmsh .msh file (format 2.2 or 4.1) for Source = Gmsh file; relative "
-                            "paths are taken from the working directory");
+                            "Source = Gmsh file: a .msh file (format 2.2 or 4.1), read as data. "
+                            "Source = Gmsh geometry: a .geo script, run by Gmsh. Relative paths "
+                            "are taken from the working directory");
     sc::core::declareRealArray(*p, "Lower corner", Teuchos::Array<double>(2, 0.0),
                                "Lower-left corner of the Rectangle", {2});
     sc::core::declareRealArray(*p, "Upper corner", Teuchos::Array<double>(2, 1.0),
@@ -102,7 +111,7 @@ Teuchos::ParameterList validated(const Teuchos::ParameterList& meshList)
 int sceneDimension(const std::string& source)
 {
   if (source == "Half ball" || source == "Unit cube") return 3;
-  if (source == "Gmsh file") return 0;
+  if (source == "Gmsh file" || source == "Gmsh geometry") return 0;
   return 2;
 }
 }  // namespace
@@ -120,7 +129,7 @@ Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::Parameter
                                   << dimension << "; " << dimension << "D scenes: "
                                   << (dimension == 2 ? "'Half disc', 'Unit square', 'Rectangle'"
                                                      : "'Half ball', 'Unit cube'")
-                                  << ", 'Gmsh file'");
+                                  << ", 'Gmsh file', 'Gmsh geometry'");
   const double R = p.get<double>("Radius");
   if (source == "Half disc") return Teuchos::rcp(new HalfDiscGeometry(R));
   if (source == "Half ball") return Teuchos::rcp(new HalfBallGeometry(R));
@@ -132,7 +141,13 @@ Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::Parameter
     return Teuchos::rcp(new BoxGeometry(std::vector<double>(lo.begin(), lo.end()),
                                         std::vector<double>(hi.begin(), hi.end()), source));
   }
-  return Teuchos::null;  // Gmsh file
+  if (source == "Gmsh geometry") {
+    const std::string file = p.get<std::string>("File");
+    SC_THROW_IF(file.empty(), sc::core::InputError,
+                "'Mesh/Source' = 'Gmsh geometry' needs 'Mesh/File' (path of a .geo script)");
+    return Teuchos::rcp(new CadGeometry(file, dimension));
+  }
+  return Teuchos::null;  // Gmsh file: its boundary comes with the file (initialMesh)
 }
 
 namespace {
@@ -285,19 +300,20 @@ MeshEstimate MeshFactory::estimateRefinement(const Teuchos::ParameterList& meshL
 
 namespace {
 
-Teuchos::RCP<SimplexMesh> initialMesh(const Teuchos::ParameterList& p, int dimension,
-                                      const Teuchos::RCP<const Geometry>& geometry)
+// The initial mesh, and for a Gmsh file the boundary it gives (null otherwise).
+GmshMeshIO::MeshFile initialMesh(const Teuchos::ParameterList& p, int dimension,
+                                 const Teuchos::RCP<const Geometry>& geometry)
 {
-  Teuchos::RCP<SimplexMesh> initial;
   if (geometry.is_null()) {
     const std::string file = p.get<std::string>("File");
     SC_THROW_IF(file.empty(), sc::core::InputError,
                 "'Mesh/Source' = 'Gmsh file' needs 'Mesh/File' (path of a .msh file)");
-    initial = GmshMeshIO::readFile(file, dimension);
-  } else {
-    initial = GmshMeshIO::meshGeometry(*geometry, p.get<double>("Initial mesh size"));
+    return GmshMeshIO::readMeshFile(file, dimension);
   }
-  return initial;
+  const double h = p.get<double>("Initial mesh size");
+  if (const auto* cad = dynamic_cast<const CadGeometry*>(geometry.get()))
+    return {GmshMeshIO::meshCad(*cad, h, p.get<int>("Geometry order")), Teuchos::null};
+  return {GmshMeshIO::meshGeometry(*geometry, h), Teuchos::null};
 }
 
 template <class T>
@@ -344,12 +360,17 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   const Teuchos::ParameterList p = validated(meshList);  // same on every rank: throws everywhere
   auto geometry = buildGeometry(p, dimension);
   checkInitialEstimate(p, dimension, limit);  // the same limit on every rank: throws everywhere
-  std::vector<double> coords;
-  std::vector<int> elems, bfv, bpart;
+  std::vector<double> coords, boundaryNodes;
+  std::vector<int> elems, bfv, bpart, boundaryPart;
   std::string names, origin, error;
   if (comm.getRank() == 0) {
     try {
-      auto m = initialMesh(p, dimension, geometry);
+      const auto file = initialMesh(p, dimension, geometry);
+      const auto& m = file.mesh;
+      if (!file.boundary.is_null()) {
+        boundaryNodes = file.boundary->faceNodes();
+        boundaryPart = file.boundary->facePart();
+      }
       coords = m->coordinates();
       elems = m->elementVertices();
       for (int f : m->boundaryFaces()) {
@@ -373,11 +394,17 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   broadcastVector(comm, bpart);
   broadcastString(comm, names);
   broadcastString(comm, origin);
+  broadcastVector(comm, boundaryNodes);
+  broadcastVector(comm, boundaryPart);
   std::vector<std::string> nameList;
   for (std::size_t a = 0, b; (b = names.find('\n', a)) != std::string::npos; a = b + 1)
     nameList.push_back(names.substr(a, b - a));
   auto mesh = Teuchos::rcp(new SimplexMesh(dimension, std::move(coords), std::move(elems), bfv,
                                            bpart, nameList, origin));
+  if (geometry.is_null())  // a Gmsh file: the boundary it gives, the same on every rank
+    geometry = Teuchos::rcp(new MeshBoundaryGeometry(dimension, mesh->boundaryNames(),
+                                                     std::move(boundaryNodes),
+                                                     std::move(boundaryPart), origin));
   return finish(p, mesh, geometry, splitBoundarySimplices, limit);
 }
 
@@ -411,7 +438,9 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   const Teuchos::ParameterList p = validated(meshList);
   auto geometry = buildGeometry(p, dimension);
   checkInitialEstimate(p, dimension, limit);
-  return finish(p, initialMesh(p, dimension, geometry), geometry, splitBoundarySimplices, limit);
+  auto file = initialMesh(p, dimension, geometry);
+  if (geometry.is_null()) geometry = file.boundary;
+  return finish(p, file.mesh, geometry, splitBoundarySimplices, limit);
 }
 
 }  // namespace sc::mesh

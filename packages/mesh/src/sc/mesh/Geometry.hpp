@@ -30,6 +30,10 @@ public:
   /// Exact area/volume of the domain (quiet NaN if not known).
   virtual double exactMeasure() const { return std::nan(""); }
 
+  /// A note on how faithful this description of the domain is, for the run's progress output and
+  /// summary.json (e.g. a file's curved part that is only its polygon); empty if there is none.
+  virtual std::string warning() const { return {}; }
+
   /// Add the domain to the current Gmsh model (OpenCASCADE kernel) and synchronise. Requires an
   /// initialised Gmsh (see GmshMeshIO).
   virtual void addToGmshModel() const = 0;

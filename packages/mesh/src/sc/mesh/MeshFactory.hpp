@@ -67,11 +67,14 @@ public:
                                          const SimplexMesh& initial);
 
   /// The quadratic geometry of the refiner's current mesh for Mesh/Geometry order = 2 (validated
-  /// list), or null: order 1, a scene without curved parts, a Gmsh file, or no projection.
+  /// list), or null: order 1, a domain without curved parts (a linear Gmsh file), or no
+  /// projection.
   static Teuchos::RCP<const CurvedElements> curvedElements(const Teuchos::ParameterList& meshList,
                                                            const BisectionRefiner& refiner);
 
-  /// The scene geometry of a validated list (null for "Gmsh file").
+  /// The geometry of a validated list: a scene's exact geometry, the CadGeometry of a Gmsh
+  /// geometry (runs its script), or null for a Gmsh file, whose boundary (MeshBoundaryGeometry)
+  /// comes with the file: build() gives it to the refiner.
   static Teuchos::RCP<const Geometry> buildGeometry(const Teuchos::ParameterList& meshList,
                                                     int dimension);
 };
