@@ -61,17 +61,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   if (boundaryConditions_.hasContact())
     contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
-  if (boundaryConditions_.hasContact()) {
-    // Curved contact faces: Mesh/Geometry order = 2 on a scene with curved parts (the contact
-    // boundary of the Hertz scenes is curved).
-    const auto& meshList = params_->sublist("Mesh");
-    const auto geometry = mesh::MeshFactory::buildGeometry(meshList, dim);
-    const bool curved = meshList.get<int>("Geometry order") == 2 && meshList.get<bool>("Project boundary") &&
-                        !geometry.is_null() && !geometry->curvedBoundaryNames().empty();
+  if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);
-    if (curved)
-      contact::checkCurvedContact(dim, discretization_.degree, contact_.frame);
-  }
   {
     // The Linear Solver keys these checks need (the list is validated when the solver is built,
     // below; absent keys read as their defaults here).
@@ -180,6 +171,18 @@ void Simulation::setupMesh()
   mesh_ = refiner_->mesh();
   if (hierarchy_)
     hierarchy_->addMesh(mesh_, {});
+  // Curved contact faces: Mesh/Geometry order = 2 on a domain with curved parts (the Hertz
+  // scenes' contact boundary; a Gmsh geometry's or a quadratic file's curved parts). Known once
+  // the geometry is, which for a Gmsh file is after reading it.
+  if (boundaryConditions_.hasContact() &&
+      !mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_).is_null())
+    contact::checkCurvedContact(problem_.dimension, discretization_.degree, contact_.frame);
+  // How faithful the domain is (a linear file's curved part is its polygon, and stays so).
+  if (const auto geometry = refiner_->geometry(); !geometry.is_null() && !geometry->warning().empty()) {
+    warnings_.push_back(geometry->warning());
+    if (comm_->getRank() == 0)
+      std::cerr << "stresscontact: warning: " << geometry->warning() << std::endl;
+  }
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
@@ -816,6 +819,7 @@ void Simulation::run()
   summary_ = std::make_unique<io::RunSummary>(comm_, output_.directory, versionString(), *params_);
   summary_->json()["deck"] = deckPath_;
   summary_->json()["phases_missing"] = phasesMissing_;
+  summary_->json()["warnings"] = warnings_;
   if (output_.writeXdmf)
     writer_ = std::make_unique<io::XdmfWriter>(comm_, output_.directory, output_.baseName);
   if (firstCycle > 0)

@@ -166,6 +166,7 @@ private:
   Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
   std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element (system_'s)
   std::vector<std::string> phasesMissing_;  ///< phases this build cannot run (none now)
+  std::vector<std::string> warnings_;  ///< warnings of the run (summary.json "warnings")
   /// The cycle loop with its marker and stop criteria (built in the constructor so that bad
   /// Adaptivity values fail before any work).
   std::unique_ptr<adapt::AdaptiveLoop> loop_;
