@@ -280,3 +280,42 @@ TEUCHOS_UNIT_TEST(Parameters, DirectoryAsDeck)
     TEST_ASSERT(contains(e.what(), "is a directory"));
   }
 }
+
+TEUCHOS_UNIT_TEST(Parameters, DeckNestingDepthIsLimited)
+{
+  // Lists nested `levels` deep inside the deck's list, one parameter in the innermost one:
+  // levels + 2 elements deep. A comment, a CDATA section and a quoted '>' do not count.
+  auto deckOfDepth = [](int levels) {
+    std::string text = "<?xml version=\"1.0\"?>\n<!-- <ParameterList name=\"not counted\"> -->\n"
+                       "<ParameterList name=\"StressContact\">\n";
+    for (int i = 0; i < levels; ++i)
+      text += "<ParameterList name=\"L" + std::to_string(i) + "\">";
+    text += "<Parameter name=\"Note\" type=\"string\" value=\"a > b\"/>";
+    for (int i = 0; i < levels; ++i)
+      text += "</ParameterList>";
+    return text + "\n</ParameterList>\n";
+  };
+  const std::string path = "core_unit_tests_deep.xml";
+  auto readError = [&](int levels) {
+    {
+      std::ofstream f(path);
+      f << deckOfDepth(levels);
+    }
+    std::string error;
+    try {
+      sc::core::readParameterFile(path);
+    } catch (const sc::core::InputError& e) {
+      error = e.what();
+    }
+    std::remove(path.c_str());
+    return error;
+  };
+  const int limit = sc::core::kMaxDeckNestingDepth;
+  TEST_EQUALITY(readError(limit - 2), "");
+  const std::string e = readError(limit - 1);
+  out << e << "\n";
+  TEST_ASSERT(contains(e, "the input deck 'core_unit_tests_deep.xml' nests its XML elements 65 levels "
+                          "deep; at most 64 levels are accepted"));
+  // Far beyond the depth at which Teuchos' conversion overflowed the stack: an error, no crash.
+  TEST_ASSERT(contains(readError(100000), "nests its XML elements 100002 levels deep"));
+}

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <limits>
 #include <regex>
 #include <sstream>
@@ -492,6 +493,60 @@ std::string withoutTeuchosNoise(const std::string& message)
   return out.str();
 }
 
+// How deeply the elements of an XML text nest (a self-closing element counts as one level).
+// Comments, CDATA sections, processing instructions, declarations and quoted attribute values
+// are skipped; malformed text is left to Teuchos' parser, which reports it. Iterative, so that
+// any depth can be measured without recursion.
+int xmlNestingDepth(const std::string& text)
+{
+  int depth = 0, deepest = 0;
+  const std::size_t n = text.size();
+  auto skipPast = [&](std::size_t from, const char* end) {
+    const std::size_t at = text.find(end, from);
+    return at == std::string::npos ? n : at + std::char_traits<char>::length(end);
+  };
+  for (std::size_t i = text.find('<'); i < n; i = text.find('<', i)) {
+    if (text.compare(i, 4, "<!--") == 0) {
+      i = skipPast(i + 4, "-->");
+      continue;
+    }
+    if (text.compare(i, 9, "<![CDATA[") == 0) {
+      i = skipPast(i + 9, "]]>");
+      continue;
+    }
+    if (text.compare(i, 2, "<?") == 0) {
+      i = skipPast(i + 2, "?>");
+      continue;
+    }
+    if (text.compare(i, 2, "<!") == 0) {
+      i = skipPast(i + 2, ">");
+      continue;
+    }
+    std::size_t j = i + 1;
+    for (char quote = 0; j < n; ++j) {
+      const char c = text[j];
+      if (quote != 0) {
+        if (c == quote)
+          quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = c;
+      } else if (c == '>') {
+        break;
+      }
+    }
+    if (j >= n)
+      break;
+    if (text[i + 1] == '/')
+      depth = std::max(0, depth - 1);
+    else if (text[j - 1] == '/')
+      deepest = std::max(deepest, depth + 1);
+    else
+      deepest = std::max(deepest, ++depth);
+    i = j + 1;
+  }
+  return deepest;
+}
+
 // The raw XML of a deck: every number parsed strictly, no key twice in one list.
 void checkXmlList(const Teuchos::XMLObject& list, const std::string& path, const std::string& file)
 {
@@ -578,6 +633,18 @@ Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path)
   std::ifstream in(path);
   SC_THROW_IF(!in, InputError,
               "cannot open the input deck '" << path << "' (no such file or not readable).");
+  // Teuchos converts the XML tree to a parameter list recursively, and so does checkXmlList: a
+  // deck nested some 10,000 levels deep overflowed the stack. The depth is therefore measured on
+  // the text, before Teuchos builds anything from it.
+  {
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const int depth = xmlNestingDepth(text);
+    SC_THROW_IF(depth > kMaxDeckNestingDepth, InputError,
+                "the input deck '" << path << "' nests its XML elements " << depth
+                                   << " levels deep; at most " << kMaxDeckNestingDepth
+                                   << " levels are accepted (a deck's <ParameterList> holds "
+                                   << "sublists a few levels deep: the shipped decks use 4).");
+  }
   Teuchos::XMLObject xml;
   try {
     xml = Teuchos::FileInputSource(path).getObject();

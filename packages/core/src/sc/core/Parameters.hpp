@@ -107,7 +107,14 @@ void declareRealArray(Teuchos::ParameterList& list, const std::string& name,
 void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
                         const std::string& origin);
 
-/// Read a Teuchos XML parameter file; a missing or malformed file is an InputError naming it.
+/// The deepest nesting of XML elements a deck may have (readParameterFile). Far above any real
+/// deck (the shipped ones nest 4 levels: deck, sublist, sublist, parameter) and far below the
+/// depth at which Teuchos' recursive XML-to-list conversion overflows the stack (about 9,900
+/// levels with the default 8 MiB stack).
+inline constexpr int kMaxDeckNestingDepth = 64;
+
+/// Read a Teuchos XML parameter file; a missing or malformed file, or one nested deeper than
+/// kMaxDeckNestingDepth, is an InputError naming it.
 Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path);
 
 /// Apply a command-line override "Path/To/Key=value": the type comes from the valid list (double,
