@@ -56,13 +56,17 @@ Teuchos::RCP<const Teuchos::ParameterList> Material::getValidParameters()
 {
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Material"));
-    // Upper bound: squares of stresses overflow near E = 1e155 (hertz2d's stick/slip states
-    // change between 1e155 and 1e160; docs/reliability.md); 1e100 leaves a wide margin for any
-    // unit system. Small values are fine (measured down to 1e-300).
+    // With displacement loads stresses scale with E, and their squares leave double's normal
+    // range near E = 1e±155 at hertz2d's strains of 1e-2: its stick/slip states change between
+    // 1e155 and 1e160 (overflow) and between 1e-155 and 1e-165 (underflow; no convergence at
+    // 1e-158 and 1e-160), and the compliance 1/E overflows below 1e-308 (MUMPS errors).
+    // [1e-100, 1e100] is the range verified to give the same force/E and contact state (test
+    // young_modulus_range; docs/reliability.md), with a wide margin for any unit system.
     declareReal(*pl, "Young modulus", 1.0,
-                "Young's modulus E (> 0), in the deck's stress units; at most 1e100 (larger values "
-                "overflow squared stresses).",
-                0.0, true, 1e100, false);
+                "Young's modulus E, in the deck's stress units, in [1e-100, 1e100]: the range "
+                "verified to give results that scale exactly with E (outside it, squares of "
+                "stresses over- or underflow).",
+                1e-100, false, 1e100, false);
     declareReal(*pl, "Poisson ratio", 0.3,
                 "Poisson's ratio ν in [0, 0.5]; 0.5 (incompressible) is valid: the method never "
                 "forms λ (docs/theory.md §\"The problem\").",
