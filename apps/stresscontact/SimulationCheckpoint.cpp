@@ -6,6 +6,8 @@
 // with cycle N+1, which then refines, solves and writes as the uninterrupted run would have.
 #include "Simulation.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -38,7 +40,9 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // Bumped when the content changes meaning; a checkpoint of another version is refused.
-constexpr long long kCheckpointVersion = 2;  // 2: contact points with face and index
+// 3: a contact point's face by its vertices (face numbers of the initial mesh and of the same
+// mesh rebuilt from the refiner's state differ).
+constexpr long long kCheckpointVersion = 3;
 
 std::string checkpointPath(const std::string& directory)
 {
@@ -101,7 +105,10 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
   // The contact points of this cycle, every rank's in rank order, with their face (in the mesh
   // of this cycle, which the checkpoint holds) and index in it: on restart rank 0 holds them all,
   // and ActiveSetSolver::transferState carries them to cycle N+1 through the refinement of the
-  // restored mesh, as in the uninterrupted run, whatever the rank count.
+  // restored mesh, as in the uninterrupted run, whatever the rank count. The face is stored by
+  // its sorted vertices, which the restored mesh keeps: its face numbers are its own (the mesh
+  // of cycle 0, straight from Gmsh, numbers its faces otherwise than the same mesh rebuilt from
+  // the refiner's state, which made every contact run killed in cycle 1 unrestartable).
   const int d = problem_.dimension;
   std::vector<double> mine;
   for (const auto& p : previousPoints_) {
@@ -109,8 +116,10 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
     mine.push_back(static_cast<double>(p.status));
     mine.push_back(p.direction[0]);
     mine.push_back(p.direction[1]);
-    mine.push_back(static_cast<double>(p.face));
     mine.push_back(static_cast<double>(p.index));
+    std::vector<int> v(mesh_->faceVertices(p.face), mesh_->faceVertices(p.face) + d);
+    std::sort(v.begin(), v.end());
+    for (int x : v) mine.push_back(static_cast<double>(x));
   }
   std::vector<double> points = contact::gatherAllVariable(mine, *comm_);
 
@@ -140,7 +149,7 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
     cp.setInts("mesh_curved_edge_parts", {s.curvedEdgeParts.begin(), s.curvedEdgeParts.end()});
 
     cp.setInts("marked_elements", {marked.begin(), marked.end()});
-    cp.setInts("contact_point_stride", {d + 5});
+    cp.setInts("contact_point_stride", {2 * d + 4});
     cp.setDoubles("contact_points", std::move(points));
 
     cp.setString("summary_cycles", summary_->json()["cycles"].dump());
@@ -156,6 +165,26 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
 int Simulation::readCheckpoint(std::vector<int>& marked)
 {
   const std::string path = checkpointPath(restartDirectory_);
+  // A run killed in cycle 0 wrote no checkpoint (none is written before a cycle is complete) but
+  // may have written that cycle's fields: nothing to continue, so the restart is the run itself,
+  // from cycle 0, which replaces those files as any run replaces an earlier run's. A directory
+  // without any file of a run is still an error (a mistyped --restart DIR).
+  {
+    namespace fs = std::filesystem;
+    const fs::path dir(restartDirectory_);
+    std::error_code ec;
+    const bool killedInCycleZero =
+        !fs::exists(path, ec) &&
+        (fs::exists(dir / (output_.baseName + "_c0000.h5"), ec) ||
+         fs::exists(dir / (output_.baseName + ".xdmf"), ec) || fs::exists(dir / "contact_cycle0.csv", ec) ||
+         fs::exists(dir / "summary.json", ec));
+    if (killedInCycleZero) {
+      progress_.message("restart: " + restartDirectory_ + " holds no checkpoint.h5 but files of a run "
+                        "killed in cycle 0, before its first complete cycle: running from cycle 0");
+      marked.clear();
+      return 0;
+    }
+  }
   // Every rank reads the file (read-only): the data are global.
   checkpoint_ = std::make_unique<io::CheckpointFile>(io::CheckpointFile::read(path));
   const io::CheckpointFile& cp = *checkpoint_;
@@ -227,14 +256,28 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
 
   const int d = problem_.dimension;
   const auto& points = cp.doubles("contact_points");
-  const int stride = d + 5;
+  const int stride = 2 * d + 4;
   if (scalar("contact_point_stride") != stride || points.size() % stride != 0)
     bad("has contact points of another dimension (damaged)");
+  // The restored mesh's boundary faces by their sorted vertices.
+  std::map<std::vector<int>, int> faceOf;
+  for (int f : mesh_->boundaryFaces()) {
+    std::vector<int> v(mesh_->faceVertices(f), mesh_->faceVertices(f) + d);
+    std::sort(v.begin(), v.end());
+    faceOf.emplace(std::move(v), f);
+  }
   previousPoints_.clear();
   for (std::size_t k = 0; k < points.size(); k += stride) {
     // Each point's face must be a boundary face of the restored mesh (the mesh of its cycle).
-    const double face = points[k + d + 3];
-    if (!(face >= 0 && face < mesh_->numFaces()) || !mesh_->isBoundaryFace(static_cast<int>(face)))
+    std::vector<int> v;
+    for (int i = 0; i < d; ++i) {
+      const double x = points[k + d + 4 + i];
+      if (!(x >= 0 && x < mesh_->numVertices() && x == std::floor(x)))
+        bad("has a contact point on a face with a vertex its mesh does not have (damaged)");
+      v.push_back(static_cast<int>(x));
+    }
+    const auto face = faceOf.find(v);
+    if (face == faceOf.end())
       bad("has a contact point on a face that its mesh does not have on the boundary (damaged)");
     if (comm_->getRank() != 0)
       continue;
@@ -243,8 +286,8 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
       p.x[i] = points[k + i];
     p.status = static_cast<contact::PointStatus>(static_cast<int>(points[k + d]));
     p.direction = {points[k + d + 1], points[k + d + 2]};
-    p.face = static_cast<int>(face);
-    p.index = static_cast<int>(points[k + d + 4]);
+    p.face = face->second;
+    p.index = static_cast<int>(points[k + d + 3]);
     previousPoints_.push_back(p);
   }
 

@@ -158,8 +158,9 @@ CheckpointFile CheckpointFile::read(const std::string& path)
   std::error_code ec;
   SC_THROW_IF(!fs::exists(path, ec), sc::core::InputError,
               "no checkpoint '" << path << "': the directory given to --restart holds no "
-                                << "checkpoint.h5 (it is written after every complete cycle; a run "
-                                << "killed in cycle 0 cannot be restarted, run it again)");
+                                << "checkpoint.h5 (it is written after every complete cycle) "
+                                << "and no file of a run killed in cycle 0: is it the output "
+                                << "directory of the run to continue?");
   SC_THROW_IF(fs::is_directory(path, ec), sc::core::InputError,
               "the checkpoint '" << path << "' is a directory, not a file");
   ErrorPrintingOff quiet;
