@@ -520,8 +520,9 @@ void Simulation::checkScene()
     std::vector<int> marked;
     readCheckpoint(marked);
   }
-  // Would the run be able to create and write its output directory? (creates nothing)
+  // Would the run be able to create and write its output directory and files? (creates nothing)
   io::checkOutputDirectory(output_.directory, *comm_);
+  io::checkRunFileNamesAreFree(output_.directory, output_.baseName, *comm_);
 }
 
 void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason)
@@ -802,6 +803,8 @@ void Simulation::run()
   std::vector<int> marked;  // the checkpoint's marking for its next cycle
   const int firstCycle = restartDirectory_.empty() ? 0 : readCheckpoint(marked);
 
+  // A directory named like one of the run's files would stop it when that file is written.
+  io::checkRunFileNamesAreFree(output_.directory, output_.baseName, *comm_);
   io::createOutputDirectory(output_.directory, *comm_);
   // The run owns its directory: an earlier run's summary, fields and CSVs go before anything is
   // written, so that no file of that run stands beside this one's (docs/output.md). A restart

@@ -80,4 +80,42 @@ TEUCHOS_UNIT_TEST(OutputDirectory, CheckCreatesNothingAndNamesTheProblem)
   fs::remove_all(dir);
 }
 
+TEUCHOS_UNIT_TEST(OutputDirectory, RunFileNamesTakenByDirectoriesAreInputErrors)
+{
+  const std::string dir = freshDirectory("names");
+  auto error = [&] {
+    try {
+      sc::io::checkRunFileNamesAreFree(dir, "fields");
+    } catch (const sc::core::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // Regular files, links and other names are no obstacle; a missing directory is none either.
+  touch(dir + "/summary.json");
+  fs::create_symlink(".", dir + "/checkpoint.h5");
+  fs::create_directories(dir + "/solution_c0000.h5");  // not this run's base name
+  fs::create_directories(dir + "/fields_c.h5");
+  TEST_EQUALITY(error(), "");
+  sc::io::checkRunFileNamesAreFree(dir + "/missing", "fields");
+  for (const std::string name : {"fields.xdmf", "fields_c0012.h5", "contact_cycle3.csv"}) {
+    fs::create_directories(dir + "/" + name);
+    const std::string e = error();
+    out << e << "\n";
+    TEST_ASSERT(e.find("'" + dir + "/" + name + "' is a directory, but a run writes its file " + name +
+                       " there") != std::string::npos);
+    fs::remove(dir + "/" + name);
+  }
+  fs::remove(dir + "/summary.json");
+  fs::create_directories(dir + "/summary.json");
+  fs::create_directories(dir + "/fields.xdmf");
+  const std::string e = error();
+  out << e << "\n";
+  TEST_ASSERT(e.find("'" + dir + "/fields.xdmf' is a directory") != std::string::npos);
+  TEST_ASSERT(e.find("(1 more such name(s) there)") != std::string::npos);
+  // An earlier run's summary.json that is a directory is neither read nor removed.
+  TEST_EQUALITY(sc::io::removeEarlierRunFiles(dir, "fields").size(), 0u);
+  fs::remove_all(dir);
+}
+
 }  // namespace

@@ -62,7 +62,8 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
   namespace fs = std::filesystem;
   std::vector<std::string> bases{baseName};
   const fs::path summary = fs::path(directory) / "summary.json";
-  {
+  std::error_code sec;
+  if (fs::is_regular_file(summary, sec)) {
     // The base name of the run that wrote summary.json (it may differ from this run's).
     std::ifstream in(summary);
     if (in) {
@@ -200,6 +201,52 @@ void checkRoomForFile(const std::string& directory, const std::string& path,
                 "no room for '" << path << "': it needs about " << mb(bytes)
                                 << ", more than the file-size limit of " << limit.rlim_cur
                                 << " bytes (ulimit -f)");
+}
+
+void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec))
+    return;
+  static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
+  const std::string base = std::regex_replace(baseName, special, R"(\$&)");
+  const std::regex ours("summary\\.json|checkpoint\\.h5|contact_cycle[0-9]+\\.csv|" + base +
+                        "\\.xdmf|" + base + "_c[0-9]+\\.h5");
+  std::vector<fs::path> found;
+  for (const auto& entry : fs::directory_iterator(directory, ec)) {
+    if (!std::regex_match(entry.path().filename().string(), ours))
+      continue;
+    // A symbolic link is replaced by the rename like a file; what it points to does not matter.
+    std::error_code sec;
+    const fs::file_type type = entry.symlink_status(sec).type();
+    if (!sec && type != fs::file_type::regular && type != fs::file_type::symlink)
+      found.push_back(entry.path());
+  }
+  SC_THROW_IF(ec, sc::core::InputError,
+              "Cannot list the output directory '" << directory << "' (Output/Directory): "
+                                                   << ec.message());
+  if (found.empty())
+    return;
+  std::sort(found.begin(), found.end());
+  const fs::path& path = found.front();
+  const bool isDirectory = fs::is_directory(fs::symlink_status(path, ec));
+  SC_THROW_IF(true, sc::core::InputError,
+              "'" << path.string() << "' is "
+                  << (isDirectory ? "a directory" : "not a regular file (a device, pipe or socket)")
+                  << ", but a run writes its file " << path.filename().string()
+                  << " there (docs/output.md): rename or remove it, or choose another output "
+                  << "directory (--output, Output/Directory)"
+                  << (found.size() > 1 ? " (" + std::to_string(found.size() - 1) +
+                                             " more such name(s) there)"
+                                       : std::string())
+                  << ".");
+}
+
+void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName,
+                              const Teuchos::Comm<int>& comm)
+{
+  runOnRoot(comm, [&] { checkRunFileNamesAreFree(directory, baseName); });
 }
 
 void checkOutputDirectory(const std::string& directory)

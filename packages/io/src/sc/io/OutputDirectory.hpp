@@ -53,6 +53,18 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
 void checkRoomForFile(const std::string& directory, const std::string& path,
                       unsigned long long bytes);
 
+/// Is anything in the way of the files a run writes in \p directory (summary.json,
+/// checkpoint.h5, `<base>.xdmf`, `<base>_c<NNNN>.h5`, contact_cycle<N>.csv)? An entry with one of
+/// these names that is a directory, device, pipe or socket cannot be replaced by the file (the
+/// rename fails after the file was written) and cannot be read as an earlier run's summary.
+/// Throws sc::core::InputError naming the first such path; a missing directory is no error.
+/// Writes nothing (run and --check alike).
+void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName);
+
+/// Collective version: rank 0 checks, every rank throws the same error on failure.
+void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName,
+                              const Teuchos::Comm<int>& comm);
+
 /// `--check`: would createOutputDirectory(\p directory) succeed? Creates nothing: an existing
 /// directory, or else its nearest existing ancestor, must be a directory in which a file can be
 /// created (probed with a file removed at once). Throws sc::core::InputError naming the directory.
