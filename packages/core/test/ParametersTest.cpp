@@ -203,7 +203,7 @@ std::string param(const std::string& name, const std::string& type, const std::s
 
 TEUCHOS_UNIT_TEST(Parameters, XmlNumbersAreParsedStrictly)
 {
-  // Teuchos alone reads these as 0, 20, 20600, 1, {0, 0} and -1 (issue #12, item 1).
+  // Teuchos alone reads these as 0, 20, 20600, 1, {0, 0} and -1 (docs/reliability.md).
   const std::string e1 = deckError(param("Poisson ratio", "double", "abc"));
   out << e1 << "\n";
   TEST_ASSERT(contains(e1, "'Material/Poisson ratio' = 'abc' is not a double (not a number)"));

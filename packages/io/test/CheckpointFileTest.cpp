@@ -1,4 +1,4 @@
-// CheckpointFile (issue #12, item 7): round trip, atomic replacement, errors naming the file;
+// CheckpointFile (docs/output.md "checkpoint.h5"): round trip, atomic replacement, errors naming the file;
 // removeFilesAfterCycle.
 #include <sc/io/CheckpointFile.hpp>
 #include <sc/io/OutputDirectory.hpp>

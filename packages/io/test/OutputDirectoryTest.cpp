@@ -1,5 +1,5 @@
 // The output directory: a run removes the files of an earlier run (and nothing else), and
-// --check's probe creates nothing (issue #12, items 3 and 5).
+// --check's probe creates nothing (docs/output.md "An earlier run's files", docs/reliability.md).
 #include <sc/io/OutputDirectory.hpp>
 
 #include <sc/core/Error.hpp>

@@ -553,8 +553,8 @@ namespace {
 // A full disk, simulated with a file-size limit (RLIMIT_FSIZE, `ulimit -f`; writes beyond it fail
 // with EFBIG as writes to a full disk fail with ENOSPC): the writer finds that there is no room
 // before HDF5 writes anything, names the file, the size and the limit, leaves no temporary, and
-// the process ends normally (before, "H5Dwrite failed" without a reason, then a segmentation
-// fault in HDF5 at MPI_Finalize; issue #12, item 8).
+// the process ends normally (otherwise HDF5 reports "H5Dwrite failed" without a reason, then
+// dies of a segmentation fault at MPI_Finalize; docs/reliability.md).
 TEUCHOS_UNIT_TEST(XdmfWriter, NoRoomForTheFileIsFoundBeforeWriting)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();

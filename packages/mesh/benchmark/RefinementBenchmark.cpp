@@ -1,4 +1,4 @@
-// Refinement throughput (issue #3): uniform bisection of the half disc (2D) and the half ball (3D)
+// Refinement throughput (docs/mesh.md): uniform bisection of the half disc (2D) and the half ball (3D)
 // up to about --max-elements elements (default 10^6), printing for each level the elements
 // created per second by the bisection itself and including the rebuild of the mesh connectivity;
 // then a local-refinement run (elements around one boundary point).

@@ -131,8 +131,8 @@ TEUCHOS_UNIT_TEST(GmshFile, UnsupportedAndInvalidElementsNameTheEntity)
 
 TEUCHOS_UNIT_TEST(GmshFile, NonFiniteCoordinatesNameTheNode)
 {
-  // Gmsh reads "nan" and "inf" as numbers (issue #12: NaN in mesh data was untested; before, a
-  // NaN y passed and the mesh checks compared NaNs).
+  // Gmsh reads "nan" and "inf" as numbers: the reader must name the node, or a NaN y passes and
+  // the mesh checks compare NaNs (docs/reliability.md).
   for (const std::string bad : {"nan", "-inf"}) {
     std::string text = std::string(kHeader) + "$Nodes\n3\n1 0 0 0\n2 1 " + bad +
                        " 0\n3 0 1 0\n$EndNodes\n$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";

@@ -1,5 +1,5 @@
-// METIS partitions of a half-disc mesh of a few thousand elements: balance within 5% (requirement
-// of issue #3), identical on every rank, owned sets covering the mesh, and ghost layers holding
+// METIS partitions of a half-disc mesh of a few thousand elements: balance within 5% (docs/mesh.md),
+// identical on every rank, owned sets covering the mesh, and ghost layers holding
 // every face neighbour.
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>

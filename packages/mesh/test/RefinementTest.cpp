@@ -413,7 +413,7 @@ namespace {
 
 // Refine `reference` with random marks for `before` cycles, take its state into a refiner built
 // on the same initial mesh, then refine both alike for `after` cycles: the meshes must be
-// bit-identical (checkpoint/restart, issue #12, item 7).
+// bit-identical (checkpoint/restart, docs/adaptivity.md).
 void restoredRefinerRefinesAlike(Teuchos::RCP<const Geometry> g, double h, int before, int after,
                                  Teuchos::FancyOStream& out, bool& success)
 {

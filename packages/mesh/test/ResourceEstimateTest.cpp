@@ -1,4 +1,4 @@
-// Estimates of mesh size, DOFs and memory before meshing and refining (issue #12, item 2),
+// Estimates of mesh size, DOFs and memory before meshing and refining,
 // calibrated on the real meshes: each test prints measured against estimated (docs/mesh.md,
 // "Resource limits", has the table), and refusals name the key, the estimate and the limit.
 #include "MeshTestUtils.hpp"
@@ -135,7 +135,8 @@ TEUCHOS_UNIT_TEST(MeshResources, AvailableMemoryAndTheLimitKey)
   TEST_ASSERT(contains(set.describe(1e6), "'Adaptivity/Max DOFs' is 1000"));
 }
 
-// The defects of issue #12, item 2: these hung in Gmsh or died in std::bad_alloc.
+// Without the estimates these hung in Gmsh or died in std::bad_alloc (docs/mesh.md "Resource
+// limits").
 TEUCHOS_UNIT_TEST(MeshResources, TooLargeMeshesAreRefusedBeforeTheyAreMade)
 {
   const auto limit = makeResourceLimit(1.0, 2, 1, 1, 2000000, 0.0, "");

@@ -1,6 +1,6 @@
 #pragma once
 // Errors of StressContact. Every error says what is wrong, where it came from (file, line, key
-// path, element, rank) and what would be valid (STYLE.md convention 4). The driver catches them,
+// path, element, rank) and what would be valid. The driver catches them,
 // prints a framed message and exits non-zero.
 
 #include <sstream>

@@ -2,7 +2,7 @@
 // Exact solutions for verification (manufactured solutions, patch tests): σ, u, θ and the data
 // f, u_D, t they induce. Points are given as x[0..d-1]; tensors row-major d×d.
 //
-// SmoothManufacturedSolution is robust in the incompressible limit (docs/theory.md §"The problem", issue #4):
+// SmoothManufacturedSolution is robust in the incompressible limit (docs/theory.md §"The problem"):
 //   u = u0 + (1/λ) ∇φ,  div u0 = 0,  φ = Π sin(ω x_i),
 //   2D: u0 = curl(sin ωx sin ωy);  3D: u0 = (ω sx cy sz, −ω cx sy sz, 0)  (s_i = sin ωx_i),
 // with wavenumber ω (default π: one half wave across the unit square/cube),
@@ -61,8 +61,9 @@ private:
 };
 
 /// A linear stress field σ(x) = S0 + Σ_k x_k S_k (symmetric, divergence-free part plus constant
-/// body force), with its u and θ, for the patch test (issue #4): RT_k with k ≥ 1 reproduces it
-/// exactly on any mesh, so any error above round-off is a bug (orientation, Piola, assembly).
+/// body force), with its u and θ, for the patch test (docs/verification.md "Patch test"): RT_k
+/// with k ≥ 1 reproduces it exactly on any mesh, so any error above round-off is a bug
+/// (orientation, Piola, assembly).
 class LinearPatchSolution : public ExactSolution {
 public:
   LinearPatchSolution(int dim, const Material& material);

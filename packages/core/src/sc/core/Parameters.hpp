@@ -1,5 +1,5 @@
 #pragma once
-// Parameter-list conventions of StressContact (docs/output.md, STYLE.md "Trilinos" anchor).
+// Parameter-list conventions of StressContact (docs/output.md, docs/architecture.md "Parameters").
 //
 // Every component describes its sublist in a static getValidParameters(): each entry has a
 // default, a doc string and, for ranges and choices, a validator. The driver merges those lists

@@ -1,6 +1,6 @@
 #pragma once
-// The data of a scene (docs/theory.md §"The problem", §9), separate from the kernels that use it
-// (STYLE.md 2): problem dimension, material, boundary conditions, and the discretisation degree.
+// The data of a scene (docs/theory.md §"The problem", §9), separate from the kernels that use it:
+// problem dimension, material, boundary conditions, and the discretisation degree.
 // Each struct owns one sublist of the deck and describes it in getValidParameters();
 // fromParameters() reads a validated list.
 //

@@ -1,6 +1,6 @@
 #pragma once
-// Strict parsing of parameter values written as text: XML decks and `--set` overrides (issue #12,
-// item 1). Teuchos' own conversions read "abc" as 0, "20600abc" as 20600 and an int "1.5" as 1;
+// Strict parsing of parameter values written as text: XML decks and `--set` overrides.
+// Teuchos' own conversions read "abc" as 0, "20600abc" as 20600 and an int "1.5" as 1;
 // readParameterFile() checks every value of a deck with checkValueText() before Teuchos converts
 // it, and applyOverride() parses with the functions below, so both paths accept the same texts.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// A checkpoint file (issue #12, item 7; docs/output.md "checkpoint.h5"): named integer arrays,
+// A checkpoint file (docs/output.md "checkpoint.h5"): named integer arrays,
 // double arrays and strings in one HDF5 file, written by one process under a temporary name and
 // renamed into place, so that a run killed while writing it leaves the previous checkpoint
 // intact. The io package stores the arrays; what they mean is the caller's (the application

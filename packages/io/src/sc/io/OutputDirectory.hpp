@@ -32,7 +32,7 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
                                                const std::string& baseName,
                                                const Teuchos::Comm<int>& comm);
 
-/// `--restart` (issue #12, item 7): the restarted run continues the files of the run it
+/// `--restart` (docs/adaptivity.md): the restarted run continues the files of the run it
 /// restarts, whose last complete cycle is \p lastCycle. Remove what that run wrote after it (the
 /// `<base>_c<NNNN>.h5` and contact_cycle<N>.csv of cycles N > lastCycle, written by a cycle that
 /// was killed) and every leftover temporary `<one of the run's files>.tmp.<pid>`; keep the rest.

@@ -426,7 +426,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
   const std::string finalPath = h5Path(cycle);
   {
     // Room for the file first (disk full, ulimit -f): HDF5 cannot close a file whose write
-    // failed half-way, and crashes at MPI_Finalize (issue #12, item 8). Data plus a margin for
+    // failed half-way, and crashes at MPI_Finalize (docs/reliability.md). Data plus a margin for
     // HDF5's metadata.
     unsigned long long bytes = 0;
     for (std::size_t g = 0; g < ng; ++g) {

@@ -71,7 +71,7 @@ public:
     std::string xml;  // the step's <Grid CollectionType="Spatial"> element
   };
   /// The steps written so far (rank 0's list; empty on other ranks). A restarted run keeps them
-  /// in its checkpoint (issue #12, item 7).
+  /// in its checkpoint (docs/adaptivity.md "Checkpoint and restart").
   const std::vector<Step>& steps() const { return steps_; }
   /// Collective: replace the list of steps by \p steps (rank 0's are used) and rewrite the
   /// .xdmf atomically: a restarted run continues the time series of the run it restarts, and

@@ -63,7 +63,7 @@ public:
 
   /// Everything the refiner carries from one call to the next: with it, a refiner built on the
   /// same initial mesh and geometry refines exactly (bit for bit) as the one it was taken from
-  /// (checkpoint/restart, issue #12, item 7). Boundary maps as (key, part) lists, part -1 for a
+  /// (checkpoint/restart, docs/adaptivity.md). Boundary maps as (key, part) lists, part -1 for a
   /// face that was split.
   struct State {
     int dim = 0;

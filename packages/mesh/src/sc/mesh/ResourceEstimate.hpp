@@ -1,6 +1,6 @@
 #pragma once
-// Estimates of the size of a run before its mesh is made or refined (issue #12, item 2;
-// docs/mesh.md "Resource limits"): elements of the initial Gmsh mesh from the scene's measure and
+// Estimates of the size of a run before its mesh is made or refined
+// (docs/mesh.md "Resource limits"): elements of the initial Gmsh mesh from the scene's measure and
 // Mesh/Initial mesh size, growth under uniform and local refinement, DOFs per element from the
 // counts of the mixed space, and bytes per DOF from the measured memory of docs/benchmarks.md.
 // A mesh whose estimate exceeds the memory limit is an InputError naming the key, the estimate
