@@ -1,5 +1,5 @@
 // elasticity_benchmark: assembly throughput and direct-solve time against DOFs for the mixed
-// elasticity system (issue #4). Prints one line per size and solver; numbers in docs/benchmarks.md.
+// elasticity system. Prints one line per size and solver; numbers in docs/benchmarks.md.
 //
 //   elasticity_benchmark [--dim=2|3] [--max-dofs=N] [--degree=k] [--solvers=KLU2,MUMPS,Iterative]
 //                        [--mesh-size=h] [--nu=ν] [--min-dofs=N] [--stress-block=MUMPS|Multigrid|...]
@@ -13,7 +13,7 @@
 // of this rank's elements. Every time is the maximum over ranks (phases start after a barrier);
 // "per rank" rates are the global count / that time / number of ranks; peak memory is the
 // resident-set high-water mark (getrusage) since the start of the program, maximum and sum over
-// ranks. Iterative (issue #10): Belos MINRES with the block-diagonal preconditioner (docs/theory.md
+// ranks. Iterative: Belos MINRES with the block-diagonal preconditioner (docs/theory.md
 // §"Linear solvers") to a 1e-8 relative residual; "analyse" is then the preconditioner build (S_σ
 // and its factorisation), "factor" 0, "iters" the MINRES iterations. scripts/solver-study.sh runs
 // the tables of docs/solvers.md.

@@ -1,4 +1,4 @@
-// The 3×3 block view (σ, u, θ) of the mixed elasticity system (BlockSystem, issue #4) against
+// The 3×3 block view (σ, u, θ) of the mixed elasticity system (BlockSystem, docs/architecture.md) against
 // the monolithic matrix M it is cut from, at 1, 2 and 4 ranks: 2D (k = 1, 2) and 3D (k = 1) on
 // the unstructured Gmsh meshes of the other assembly tests, with Dirichlet and traction data so
 // that the traction rows eliminated in M are part of the blocks.

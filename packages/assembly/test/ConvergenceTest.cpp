@@ -1,5 +1,5 @@
-// Convergence of the mixed method on the ν-robust manufactured solution (issue #4 acceptance,
-// numbers in docs/verification.md). Source of the expected numbers: a priori theory for
+// Convergence of the mixed method on the ν-robust manufactured solution (numbers in
+// docs/verification.md). Source of the expected numbers: a priori theory for
 // RT_k × DP_k × CP_k (Boffi–Brezzi–Fortin 2009): ‖σ−σh‖, ‖div(σ−σh)‖, ‖u−uh‖ = O(h^{k+1}),
 // with constants independent of λ (locking-free).
 //   2D, k = 1, 2, ν ∈ {0.3, 0.4999, 0.5}: fitted rates ≥ k + 1 − 0.1 over 4 levels, and
@@ -72,7 +72,7 @@ void convergence(int dim, int k, int levels, double h0, int initialRefinements, 
   TEST_COMPARE(finest[0.5].stressDiv / finest[0.3].stressDiv, <, 2.0);
 }
 
-// Curved boundary elements (issue #11, item 4; docs/verification.md "Curved boundaries"): the
+// Curved boundary elements (docs/verification.md "Curved boundaries"): the
 // manufactured solution on the half disc x² + (y−1)² < 1, y < 1, ν = 0.3, from the Gmsh mesh of
 // size 0.25 refined once; Top: exact displacement; Arc: the exact traction σ(x) n_○(x) with the
 // normal n_○ of the exact circle, imposed essentially on the arc's faces. (With the discrete

@@ -1,7 +1,7 @@
 // The Krylov solver with the block-diagonal preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §"Linear solvers",
-// issue #10) on the manufactured elasticity problems of docs/verification.md:
+// docs/solvers.md) on the manufactured elasticity problems of docs/verification.md:
 //  - iteration counts to a 1e-8 relative residual (the true one) stay within 1.5× over refinement
-//    levels and ν ∈ {0.3, 0.49, 0.4999, 0.5}: the acceptance bound of issue #10. Measured when
+//    levels and ν ∈ {0.3, 0.49, 0.4999, 0.5}: the acceptance bound of docs/solvers.md. Measured when
 //    written (HRZ-lumped θ block): 45–58 (2D, 767–11777 DOFs), 67–77 (3D, 4452–33720 DOFs);
 //    the design notes' (docs/theory.md §"Linear solvers") prototype saw 21–36 with exact blocks, on the preconditioned residual;
 //  - the solution agrees with MUMPS' to the solver tolerance, at every rank count this test runs;
@@ -82,7 +82,7 @@ void checkRobustness(int dim, int levels, Teuchos::FancyOStream& out, bool& succ
   }
   out << "iterations " << lo << " .. " << hi << ", max/min " << double(hi) / lo << "\n";
   TEST_COMPARE(lo, >, 0);
-  TEST_COMPARE(double(hi) / lo, <=, 1.5);  // issue #10 acceptance
+  TEST_COMPARE(double(hi) / lo, <=, 1.5);  // acceptance bound of docs/solvers.md
 }
 
 TEUCHOS_UNIT_TEST(IterativeSolver, RobustInHAndLambda2D) { checkRobustness(2, 3, out, success); }

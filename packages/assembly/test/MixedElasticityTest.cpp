@@ -1,4 +1,4 @@
-// Verification of the assembled mixed elasticity system (issue #4), run at 1, 2 and 4 ranks:
+// Verification of the assembled mixed elasticity system (docs/verification.md), run at 1, 2 and 4 ranks:
 // - patch test (docs/theory.md §"Mixed formulation"): the linear stress field of core::LinearPatchSolution lies in RT_k
 //   for k ≥ 1, so σ_h = σ, θ_h = θ and div σ_h = div σ up to round-off on the unstructured Gmsh
 //   meshes of the half disc / unit cube (u_h is its L² projection; analytic argument in

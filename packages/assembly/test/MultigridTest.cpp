@@ -1,4 +1,4 @@
-// Building blocks of the stress-block multigrid (docs/theory.md §"Linear solvers", issue #10):
+// Building blocks of the stress-block multigrid (docs/theory.md §"Linear solvers", docs/solvers.md):
 //  - the RT prolongation is exact between nested meshes: the prolongated coarse solution, a
 //    fine-mesh function, equals the coarse one (values and divergence) at the cubature points of
 //    every fine element to rounding, 2D and 3D, k = 1 and 2, at any rank count;

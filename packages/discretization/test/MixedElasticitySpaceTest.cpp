@@ -250,7 +250,7 @@ TEUCHOS_UNIT_TEST(FaceDofPoints, PointValuesOnBoundaryFaces)
     TEST_COMPARE(std::abs(p.scale), >, 0.0);
 }
 
-// Curved (quadratic-geometry) elements, Mesh/Geometry order = 2 (issue #11, item 4).
+// Curved (quadratic-geometry) elements, Mesh/Geometry order = 2 (docs/mesh.md "Curved elements").
 namespace {
 
 struct CurvedScene {

@@ -1,7 +1,8 @@
 // Tests of the direct solvers (KLU2, MUMPS), equilibration and symbolic reuse on model systems
 // whose exact solution is known: x* is manufactured and b = A x* (ModelMatrices.hpp), so every
-// bound below is a bound on the forward error of the solver, with the tolerance of the brief
-// (issue 4 item 3: 1e-10 for Poisson, 1e-8 for the scaled saddle point, 1e-12 across rank counts).
+// bound below is a bound on the forward error of the solver, with the tolerances of
+// docs/solvers.md "Tests" (1e-10 for Poisson, 1e-8 for the scaled saddle point, 1e-12 across
+// rank counts).
 
 #include <cmath>
 #include <string>
@@ -121,7 +122,7 @@ double differenceToSerialSolve(const std::string& type, bool symmetric, BuildMat
 }
 
 // (a) Poisson with a manufactured solution, two right-hand sides; both solvers, both MUMPS
-// symmetry modes (the 5-point Laplacian is SPD). Source: analytic x*, tolerance 1e-10 (issue 4).
+// symmetry modes (the 5-point Laplacian is SPD). Source: analytic x*, tolerance 1e-10.
 // (Values are computed before TEST_COMPARE, which evaluates its arguments twice.)
 TEUCHOS_UNIT_TEST(DirectSolver, PoissonManufacturedSolution)
 {

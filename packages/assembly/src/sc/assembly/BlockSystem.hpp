@@ -1,6 +1,6 @@
 #pragma once
 // The mixed elasticity system (docs/theory.md §"Mixed formulation") as a 3×3 block operator, for
-// block preconditioners (Teko, #7) and anything else that wants the fields apart:
+// block preconditioners (Teko) and anything else that wants the fields apart:
 //
 //   [ A   B1ᵀ  B2ᵀ ]      block 0: σ (all d rows of RT_k)
 //   [ B1  0    0   ]      block 1: u (all d components of DP_k)

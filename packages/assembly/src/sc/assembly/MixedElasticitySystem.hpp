@@ -1,7 +1,7 @@
 #pragma once
 // The mixed elasticity system on one mesh: the pipeline mesh → partition → space → assembler →
-// solve that the application, the tests and the benchmarks share (STYLE.md 9), so that a test
-// exercises what users run.
+// solve that the application, the tests and the benchmarks share, so that a test exercises
+// what users run (docs/architecture.md "One pipeline").
 //
 //   sc::assembly::MixedElasticitySystem system(mesh, degree, comm, curved);  // METIS, DOFs
 //   system.assemble({material, boundaryConditions, exact});  // graph (first call), matrix, rhs

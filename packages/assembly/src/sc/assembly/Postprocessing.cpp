@@ -1,4 +1,5 @@
-// Errors against exact solutions and cell averages for output (issue #4 item 4).
+// Errors against exact solutions (docs/verification.md) and cell averages for output
+// (docs/output.md "Fields in a run's files").
 #include <algorithm>
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Owner of the "Linear Solver" sublist (docs/theory.md §"Linear solvers", §8): its valid parameters
 // and the solvers it names (direct: KLU2, MUMPS; Krylov: Iterative). Types are registered by name;
-// an unknown type is an InputError listing the known ones (STYLE.md, Trilinos anchor).
+// an unknown type is an InputError listing the known ones (docs/architecture.md "Parameters").
 
 #include <string>
 #include <vector>
