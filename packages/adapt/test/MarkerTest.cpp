@@ -118,7 +118,8 @@ TEUCHOS_UNIT_TEST(StopCriteria, CyclesDofsTarget)
   TEST_THROW(sc::adapt::StopCriteria bad(s), sc::core::InputError);
 }
 
-// Issue #12, item 2: a step whose next mesh would exceed the memory limit stops the run.
+// A step whose next mesh would exceed the memory limit stops the run (docs/mesh.md "Resource
+// limits").
 TEUCHOS_UNIT_TEST(StopCriteria, NextMeshAboveTheMemoryLimit)
 {
   sc::adapt::AdaptivitySettings s;

@@ -1,4 +1,4 @@
-// Hertz contact (issue #5 acceptance; docs/theory.md §"Contact and friction", §9), at 1, 2 and 4
+// Hertz contact (docs/contact.md; docs/theory.md §"Contact and friction", §9), at 1, 2 and 4
 // ranks. References: plane-strain Hertz (Johnson 1985): E* = E/(1−ν²), a = √(4PR/(πE*)), p0 =
 // 2P/(πa), p(x) = p0 √(1 − x²/a²), with P the computed resultant (the half disc is finite).
 #include <algorithm>
@@ -149,10 +149,10 @@ struct FrictionlessHertz2D {
   double P, a, p0, profileError, zigzag;
 };
 
-// Frictionless Hertz 2D on the mesh refined towards the zone: checks of issue #5 against the
+// Frictionless Hertz 2D on the mesh refined towards the zone: checks (docs/contact.md) against the
 // plane-strain Hertz values from the computed load P (Johnson 1985): a = √(4PR/(πE*)),
 // p0 = 2P/(πa), p(x) = p0√(1 − x²/a²). Returns the numbers for cross-ν comparisons.
-// `tolerance`: relative bound on a and p0 (issue #5: 3%).
+// `tolerance`: relative bound on a and p0 (3% in docs/contact.md "Verification").
 FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::FancyOStream& out,
                                    bool& success)
 {
@@ -200,8 +200,8 @@ FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::Fancy
 
 }  // namespace
 
-// ν = 0.28 (docs/theory.md §"Scenes") and the incompressible limit (issue #5: "converges, no
-// locking or oscillation in σ_N"): ν = 0.4999 and 0.5 meet the same Hertz checks (E* = E/(1−ν²)
+// ν = 0.28 (docs/theory.md §"Scenes") and the incompressible limit (it must converge, with no
+// locking or oscillation in σ_N): ν = 0.4999 and 0.5 meet the same Hertz checks (E* = E/(1−ν²)
 // stays finite), and the point-to-point staircase of σ_N grows by at most half over ν = 0.28 plus
 // 0.2% of p0 (a locking discretisation shows a checkerboard pressure here). Two more sweeps than
 // the other 2D cases in a smaller disc around the zone: the half-width is read off the point
@@ -253,7 +253,7 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless2D)
   }
 }
 
-// The talk's literal body-normal frame (issue #5's verified model) still meets issue #5's 3%.
+// The talk's literal body-normal frame (docs/contact.md "Contact model") still meets the 3%.
 TEUCHOS_UNIT_TEST(Hertz, Frictionless2DBodyFrame)
 {
   HertzCase h = frictionlessCase(0.28);
@@ -261,7 +261,7 @@ TEUCHOS_UNIT_TEST(Hertz, Frictionless2DBodyFrame)
   frictionless2D(h, 0.03, out, success);
 }
 
-// The obstacle-normal frame (issue #11, "contact model"): on 10 sweeps (180k DOFs) a and p0
+// The obstacle-normal frame (docs/contact.md "Contact model"): on 10 sweeps (180k DOFs) a and p0
 // within 1% of Hertz from the computed load and a staircase below 1% of p0 (measured
 // 2026-12-01: +0.2%, +0.17%, 0.3%; the body frame has a face-wise staircase of ~5-7% of p0).
 TEUCHOS_UNIT_TEST(Hertz, ObstacleFrameAccuracy2D)
@@ -273,7 +273,7 @@ TEUCHOS_UNIT_TEST(Hertz, ObstacleFrameAccuracy2D)
 }
 
 
-// Curved boundary elements (issue #11, item 4; docs/contact.md "Curved contact faces"): the
+// Curved boundary elements (docs/contact.md "Curved contact faces"): the
 // contact points, their normals, scales and weighted gaps on the quadratic faces of the arc,
 // with Bernstein constraints (the gap is not linear along a curved face). Obstacle frame,
 // k = 1 (8 sweeps) and 2 (6 sweeps), ν = 0.28. References: Hertz from the computed load, and
@@ -449,7 +449,7 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
   }
 }
 
-// Initial overlap (issue #11, defect 2): a flat punch on the plane y = δ, i.e. overlapping its
+// Initial overlap (docs/contact.md "Initial overlap"): a flat punch on the plane y = δ, i.e. overlapping its
 // base by δ, is the same punch on y = 0 pushed δ further: the same tractions at every point
 // (the analytic equivalence of the linearised problem), σ to 1e-8 of the peak.
 TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
@@ -474,7 +474,7 @@ TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
   TEST_COMPARE(worst, <=, 1e-8 * b.summary.maxPressure);
 }
 
-// Nested iteration through the refinement history (issue #9): the contact state of a solved
+// Nested iteration through the refinement history (docs/adaptivity.md): the contact state of a solved
 // Hertz run with Coulomb friction (free, stick and slip points all occur) is carried to a mesh in
 // which the contact faces on one side of the zone were bisected, by ActiveSetSolver::transferState
 // with the parents of mesh::boundaryFaceParents. Every new point must have the state of the
@@ -607,7 +607,7 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
   }
 }
 
-// Contact degrees (issue #11, defect 1): the face DOF points' weights ∫_F L_p are positive for
+// Contact degrees (docs/contact.md "Degree"): the face DOF points' weights ∫_F L_p are positive for
 // k = 1..4 in 2D (Gauss-Lobatto interior points from k = 2) and k = 1, 2, 4 in 3D; 3D k = 3 has a
 // negative one (−0.125) on Intrepid2's warp-blend face lattice, and 3D k = 4 is not verified:
 // both are rejected.
@@ -677,9 +677,10 @@ HertzCase hertz3DScene()
   h.meshSize = 0.25;
   // 6 sweeps of the elements with a Cap face within 0.22 of the bottom point: 3418 tets, 139k
   // DOFs at k = 1. Measured 2026-12-02 on straight faces: radius from the area −2.2%, p0 +1.9%,
-  // outermost active point 1.04 a, 7 Newton steps, about 60 s (9 sweeps, 346k DOFs, were used
-  // until then: they took 4 minutes of every test run). Before the obstacle-normal frame and the
-  // Bernstein constraints of issue #11 this mesh gave +5.4% and +5.0%.
+  // outermost active point 1.04 a, 7 Newton steps, about 60 s (9 sweeps, 346k DOFs, took 4
+  // minutes of every test run). This mesh is enough with the obstacle-normal frame and the
+  // Bernstein constraints: point constraints in the body-normal frame gave +5.4% and +5.0% on
+  // it (docs/contact.md "Constraint points").
   h.localRefinements = 6;
   h.refineRadius = 0.22;
   h.refineBoundary = "Cap";
@@ -721,14 +722,14 @@ void frictionless3D(const HertzCase& h, const Hertz3DBounds& bounds, Teuchos::Fa
   const double centre = std::hypot(global[0], global[1]) / std::abs(global[2]);
   out << "centre of pressure at " << centre << " from the axis\n";
   TEST_COMPARE(centre, <=, bounds.centre * a);
-  // Issue #5: radius and p0 within 5% of the sphere formulas from the computed load. Measured
+  // Radius and p0 within 5% of the sphere formulas from the computed load. Measured
   // (2026-11-22, docs/contact.md) +2.1% for the radius from the zone's area and +4.2% for p0; the
   // outermost active point overshoots by 13% because the discrete zone edge is ragged.
   TEST_COMPARE(P, >, 0.0);
   TEST_COMPARE(std::abs(r.summary.equivalentZoneSize - a), <=, bounds.radius * a);
   TEST_COMPARE(std::abs(r.summary.maxPressure - p0), <=, bounds.p0 * p0);
   // No contact outside the zone: with point constraints in 3D, faces near the zone edge kept
-  // active points out to 1.26 a with up to 14% of p0 (issue #11; docs/contact.md "Constraint
+  // active points out to 1.26 a with up to 14% of p0 (docs/contact.md "Constraint
   // points"). Bernstein control points sit on vertices, so allow one vertex spacing beyond a.
   double rmax = 0.0;
   for (const auto& p : r.points)
@@ -744,8 +745,8 @@ void frictionless3D(const HertzCase& h, const Hertz3DBounds& bounds, Teuchos::Fa
 // Straight faces (Mesh/Geometry order = 1) at k = 1.
 TEUCHOS_UNIT_TEST(Hertz, Frictionless3D) { frictionless3D(hertz3DScene(), {}, out, success); }
 
-// Curved boundary elements in 3D (issue #11, item 4): the quadratic faces of the cap reach the
-// 5% of issue #5 on the 6-sweep mesh (139k DOFs), as straight faces now do (Frictionless3D).
+// Curved boundary elements in 3D (docs/contact.md "Curved contact faces"): the quadratic faces
+// of the cap reach the 5% of Frictionless3D on the 6-sweep mesh (139k DOFs), as straight faces do.
 // Measured 2026-12-01: radius from the area −2.4%, p0 −1.4%, outermost active point 1.04 a.
 TEUCHOS_UNIT_TEST(Hertz, CurvedFrictionless3D)
 {
@@ -754,7 +755,7 @@ TEUCHOS_UNIT_TEST(Hertz, CurvedFrictionless3D)
   frictionless3D(h, {}, out, success);
 }
 
-// Degree 2 in 3D (issue #11): the same 5% on the 6-sweep mesh (k = 2 has 6 points per face).
+// Degree 2 in 3D (docs/contact.md "Degree"): the same 5% on the 6-sweep mesh (k = 2 has 6 points per face).
 // About 10 minutes (a 3D k = 2 Newton step factorises ~50M nonzeros): label `long`.
 TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless3D)
 {
@@ -764,7 +765,7 @@ TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless3D)
 }
 
 // Degree 2 in 3D on a coarse mesh (initial size 0.4, 3 sweeps: 41k DOFs, 13 active points, about
-// 30 s), in every test run: the resultant pushes (the k = 2 defect of issue #11 pulled), points
+// 30 s), in every test run: the resultant pushes (not pulls: docs/contact.md "Degree"), points
 // to the axis, and the radius and p0 are those of Hertz up to the resolution of a zone 2-3
 // elements wide (measured 2026-12-02: radius from the area −24.6%, p0 +44.2%, outermost active
 // point 1.37 a, centre of pressure 0.083 a from the axis: the coarse unstructured mesh is not
@@ -780,8 +781,8 @@ TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless3DCoarse)
 }
 
 // 2D degree 2 (serial, expensive at 8 sweeps: 109k DOFs, about 20 s each).
-// Degree 2 (issue #11, defect 1: it returned a pulling force of −40404 on the equispaced RT_2
-// lattice, whose middle point has the interpolatory weight −1/3). Same tolerances as k = 1. On
+// Degree 2 (docs/contact.md "Degree": the equispaced RT_2 lattice, whose middle point has the
+// interpolatory weight −1/3, gives a pulling force of −40404). Same tolerances as k = 1. On
 // straight-sided elements the k = 2 traction resolves the kinks of the polygonal arc: a
 // staircase of ~3.5% of p0 that curved boundary elements are to remove (docs/contact.md).
 TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless2D)
@@ -845,7 +846,7 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
   coulomb3D(h, out, success);
 }
 
-// 3D Coulomb at k = 2 (accepted for contact since issue #11): the same checks as k = 1, which
+// 3D Coulomb at k = 2 (accepted for contact, docs/contact.md "Degree"): the same checks as k = 1, which
 // hold on any mesh, on the coarse mesh of Degree2Frictionless3DCoarse (41k DOFs; measured
 // 2026-12-02: 9 Newton steps, 5 stick / 9 slip points, about 50 s; on the 4-sweep mesh of the
 // 0.25 mesh, 209k DOFs: 12 steps, 38 / 88 points, 5 minutes).

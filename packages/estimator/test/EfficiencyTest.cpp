@@ -1,9 +1,9 @@
 // Efficiency of the estimator and convergence of the reconstruction on the ν-robust manufactured
-// solution (issue #9 acceptance; numbers in docs/theory.md).
+// solution (numbers in docs/theory.md and docs/verification.md).
 // Sources of the expected numbers:
 // - Efficiency index I = η / ‖A^{1/2}(σ − σ_h)‖: the design notes' (docs/theory.md §"Estimator") independent prototype (2D, k = 1,
 //   4 levels, ν ∈ {0.3, 0.4999, 0.5}) found η_volume / ‖A^{1/2}(σ − σ_h)‖ in [0.94, 1.28],
-//   max/min 1.36; the issue asks for max/min < 1.5 over 4 (2D) / 3 (3D) levels and the three ν.
+//   max/min 1.36; this test asks for max/min < 1.5 over 4 (2D) / 3 (3D) levels and the three ν.
 // - Reconstruction: ‖∇(u − u^R)‖ = O(h^{k+1}) for u^R in P_{k+1} (the local problems reproduce
 //   P_{k+1} and z_h − ∇u = O(h^{k+1})); P_k gives O(h^k) (docs/theory.md §"Estimator": prototype rate 1 for k = 1).
 #include <algorithm>

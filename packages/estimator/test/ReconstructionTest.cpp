@@ -1,5 +1,5 @@
-// Displacement reconstruction and estimator: exactness and partition independence (issue #9
-// acceptance "Reconstruction exactness ... at 1, 2 and 4 ranks"). Source of the expected numbers:
+// Displacement reconstruction and estimator: exactness and partition independence at 1,
+// 2 and 4 ranks (docs/verification.md "Estimator and reconstruction"). Source of the expected numbers:
 // analytic. For the linear patch solution (σ linear and symmetric, u quadratic, θ linear) the mixed
 // method reproduces σ and θ exactly and u_h is the L² projection of u, so z_h = ∇u, u° = u on every
 // element, the averages and the Dirichlet values are u: u^R = u and every part of η is zero up to

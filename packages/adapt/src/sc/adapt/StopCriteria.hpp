@@ -16,8 +16,8 @@ public:
   std::string reason(int cycle, long long dofs, double eta, double stressNorm) const;
   /// The reason to stop before a refinement whose next mesh is estimated at `nextDofs` DOFs
   /// and `nextBytes` bytes, if that exceeds `limitBytes` (from `limitSource`, e.g.
-  /// "MemAvailable in /proc/meminfo"), or "" (issue #12, item 2: the run stops cleanly, with
-  /// its solved cycles written, instead of dying in std::bad_alloc).
+  /// "MemAvailable in /proc/meminfo"), or "" (the run stops cleanly, with
+  /// its solved cycles written, instead of dying in std::bad_alloc; docs/mesh.md "Resource limits").
   std::string memoryReason(double nextDofs, double nextBytes, double limitBytes,
                            const std::string& limitSource) const;
 

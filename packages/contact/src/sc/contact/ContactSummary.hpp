@@ -1,5 +1,5 @@
 #pragma once
-// Global contact quantities of a solved state (issue #5 outputs): resultant force, peak
+// Global contact quantities of a solved state (docs/contact.md "Outputs"): resultant force, peak
 // pressure, contact-zone half-width (2D) or radius (3D), stick-zone size, point counts.
 // Zone sizes, two ways (both in the obstacle plane):
 //  - outermost: from the centroid of the contact points, the midpoint between the outermost point
