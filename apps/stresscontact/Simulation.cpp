@@ -114,7 +114,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
 
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
-  // is ill-posed here). Say so now rather than let the solver fail (issue #12, item 3).
+  // is ill-posed here). Say so now rather than let the solver fail (docs/reliability.md).
   if (boundaryConditions_.boundariesOfType(core::BoundaryType::Displacement).empty()) {
     std::ostringstream given;
     for (const auto& bc : boundaryConditions_.conditions)
@@ -147,7 +147,7 @@ void Simulation::setupMesh()
 {
   auto t = timers_.scope("mesh");
   // The memory limit: Mesh/Memory limit (GB), or rank 0's available memory, the same on every
-  // rank so that the estimates of MeshFactory and of the adaptive steps agree (issue #12, item 2).
+  // rank so that the estimates of MeshFactory and of the adaptive steps agree (docs/mesh.md).
   double available = 0.0;
   std::string source;
   if (comm_->getRank() == 0)
@@ -204,7 +204,7 @@ void Simulation::setupMesh()
 void Simulation::warnIfLargeDisplacement() const
 {
   // The model is linear (small strain): a prescribed displacement that is not small against
-  // the body is outside its range. Warn, on rank 0, and go on (issue #12, item 8).
+  // the body is outside its range. Warn, on rank 0, and go on (docs/reliability.md).
   double uMax = 0.0;
   std::string where;
   for (const auto& bc : boundaryConditions_.conditions) {
@@ -830,7 +830,7 @@ void Simulation::run()
 
   try {
     loop_->run(*this, firstCycle, std::move(marked));
-    // A scene whose contact could not be solved (issue #5) is not "converged".
+    // A scene whose contact could not be solved is not "converged".
     summary_->setConverged(solved_);
     summary_->write();
     progress_.message("done: " + output_.directory + "/summary.json");

@@ -131,7 +131,7 @@ private:
   /// The cycle's timings and peak memory into summary.json, and its one-line progress summary.
   void recordCost();
 
-  // Checkpoint/restart (SimulationCheckpoint.cpp; issue #12, item 7).
+  // Checkpoint/restart (SimulationCheckpoint.cpp; docs/adaptivity.md "Checkpoint and restart").
   /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5 with the
   /// elements `marked` for the next cycle.
   void writeCheckpoint(int cycle, const std::vector<int>& marked);

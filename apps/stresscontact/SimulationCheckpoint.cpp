@@ -1,4 +1,4 @@
-// Checkpoint/restart of adaptive runs (issue #12, item 7; docs/adaptivity.md "Checkpoint and
+// Checkpoint/restart of adaptive runs (docs/adaptivity.md "Checkpoint and
 // restart"). After every complete cycle N the run writes <output>/checkpoint.h5 (atomically):
 // the mesh of cycle N with the refiner's bisection state, the elements marked for cycle N+1, the
 // contact points of cycle N (the next cycle's start), the summary's cycle records, the XDMF
