@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hardening runs (issue #12, items 9 and 10; docs/reliability.md "Sanitizers" and "Fuzzing").
+# Hardening runs (docs/reliability.md "Sanitizers" and "Fuzzing").
 # Not part of CI: a cold sanitizer build takes about 25 minutes on 2 cores.
 #
 #   scripts/sanitize.sh test [ctest args]   build everything with clang + AddressSanitizer +

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Krylov solver study of docs/solvers.md (issue #10), from an existing build:
+# The Krylov solver study of docs/solvers.md, from an existing build:
 #   scripts/solver-study.sh iterations   # MINRES iterations: levels x ν, exact S_σ and multigrid
 #   scripts/solver-study.sh cost         # time and peak memory vs DOFs: MUMPS, Iterative with the
 #                                        # exact S_σ, Iterative with multigrid; 1, 2 and 4 ranks

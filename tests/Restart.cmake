@@ -1,7 +1,7 @@
 # cmake -DAPP=stresscontact -DCOMPARE=compare_summaries -DMPIEXEC=mpiexec -DMPIFLAGS="a|b" -DNP=2
 #       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 [-DRTOL=1e-12] [-DATOL=0]
 #       [-DIGNORE="key|..."] [-DSAME_FILES=ON] [-DRESTART_NP=1] -P Restart.cmake
-# Checkpoint/restart of an adaptive run (issue #12, item 7; docs/adaptivity.md):
+# Checkpoint/restart of an adaptive run (docs/adaptivity.md "Checkpoint and restart"):
 #   1. the deck uninterrupted into OUT/full;
 #   2. the same run killed (SIGKILL, SC_KILL_IN_CYCLE) in cycle KILL_CYCLE, after that cycle's
 #      fields and CSV were written and before its summary record and checkpoint, into OUT/killed;

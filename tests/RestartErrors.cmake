@@ -1,5 +1,5 @@
 # cmake -DAPP=stresscontact -DDECK=hertz2d.xml -DOUT=dir -P RestartErrors.cmake
-# `--restart DIR` refuses what it cannot continue (issue #12, item 7; docs/reliability.md), with
+# `--restart DIR` refuses what it cannot continue (docs/reliability.md), with
 # exit status 1, a message naming the file or the parameter, and the directory left as it was:
 # other parameters than the checkpoint's, no checkpoint, a file that is not HDF5, an HDF5 file
 # that is not a checkpoint, and --output naming another directory.

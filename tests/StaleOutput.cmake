@@ -1,5 +1,5 @@
 # cmake -DAPP=stresscontact -DDECK=hertz2d.xml -DOUT=dir -P StaleOutput.cmake
-# A run owns its output directory (issue #12, item 5; docs/output.md): a second run into the
+# A run owns its output directory (docs/output.md "An earlier run's files"): a second run into the
 # directory of an earlier, longer run leaves none of that run's files, a failed run leaves no
 # fields of the earlier successful run beside its own summary, and other files are kept.
 file(REMOVE_RECURSE "${OUT}")

@@ -27,7 +27,7 @@ if(NOT EXISTS ${WORK}/summary.json)
 endif()
 
 # The installed application starts and runs a small deck from the install prefix by itself (its
-# RPATH finds the installed libraries; issue #12, item 6).
+# RPATH finds the installed libraries; docs/reliability.md).
 set(app_out ${WORK}/installed-app-output)
 execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH
                         ${PREFIX}/bin/stresscontact ${PREFIX}/share/stresscontact/input/hertz2d.xml

@@ -1,5 +1,5 @@
 // compare_summaries: do two runs' summary.json agree cycle by cycle? (checkpoint/restart tests,
-// issue #12, item 7)
+// docs/adaptivity.md "Checkpoint and restart")
 //
 //   compare_summaries EXPECTED ACTUAL [--rtol R] [--atol A] [--ignore KEY]...
 //
