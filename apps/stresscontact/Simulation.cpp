@@ -35,6 +35,7 @@
 #include <sc/solvers/LinearSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <sc/io/OutputDirectory.hpp>
+#include <sc/io/OutputLock.hpp>
 #include <sc/io/RunSummary.hpp>
 #include <sc/io/XdmfWriter.hpp>
 #include <sc/mesh/CurvedElements.hpp>
@@ -523,6 +524,7 @@ void Simulation::checkScene()
   // Would the run be able to create and write its output directory and files? (creates nothing)
   io::checkOutputDirectory(output_.directory, *comm_);
   io::checkRunFileNamesAreFree(output_.directory, output_.baseName, *comm_);
+  io::checkOutputLock(output_.directory, *comm_);
 }
 
 void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason)
@@ -806,6 +808,10 @@ void Simulation::run()
   // A directory named like one of the run's files would stop it when that file is written.
   io::checkRunFileNamesAreFree(output_.directory, output_.baseName, *comm_);
   io::createOutputDirectory(output_.directory, *comm_);
+  // One run per directory: held until run() returns or throws (io/OutputLock.hpp).
+  const io::OutputLock lock(*comm_, output_.directory);
+  if (comm_->getRank() == 0 && !lock.takenOver().empty())
+    std::cerr << "stresscontact: note: " << lock.takenOver() << std::endl;
   // The run owns its directory: an earlier run's summary, fields and CSVs go before anything is
   // written, so that no file of that run stands beside this one's (docs/output.md). A restart
   // keeps the files of the cycles it continues and removes those of the killed cycle.
