@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <sys/stat.h>
 
 namespace sc::io {
@@ -49,6 +50,27 @@ void writeDataset(hid_t file, const std::string& name, hid_t memType, hid_t file
     checkWrite(H5Dwrite(set.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", name, path);
 }
 
+// FNV-1a, 64 bits: each step h = (h ^ byte) · prime is a bijection of h for a given byte, so two
+// byte sequences of one length that differ in one byte (a flipped bit) never hash alike.
+class Fnv1a {
+public:
+  void add(const void* data, std::size_t n)
+  {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h_ = (h_ ^ b[i]) * 0x100000001b3ULL;
+  }
+  void add(const std::string& s)
+  {
+    const unsigned long long n = s.size();
+    add(&n, sizeof n);
+    add(s.data(), s.size());
+  }
+  unsigned long long value() const { return h_; }
+
+private:
+  unsigned long long h_ = 0xcbf29ce484222325ULL;
+};
+
 herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* out)
 {
   static_cast<std::vector<std::string>*>(out)->push_back(name);
@@ -56,6 +78,26 @@ herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* out)
 }
 
 }  // namespace
+
+unsigned long long CheckpointFile::checksum() const
+{
+  // Every entry with its kind, name, length and bytes, in name order within each kind.
+  Fnv1a h;
+  for (const auto& [name, v] : ints_) {
+    h.add("i"), h.add(name);
+    const unsigned long long n = v.size();
+    h.add(&n, sizeof n);
+    h.add(v.data(), v.size() * sizeof(long long));
+  }
+  for (const auto& [name, v] : doubles_) {
+    h.add("d"), h.add(name);
+    const unsigned long long n = v.size();
+    h.add(&n, sizeof n);
+    h.add(v.data(), v.size() * sizeof(double));
+  }
+  for (const auto& [name, v] : strings_) h.add("s"), h.add(name), h.add(v);
+  return h.value();
+}
 
 void CheckpointFile::setInts(const std::string& name, std::vector<long long> values)
 {
@@ -136,6 +178,16 @@ void CheckpointFile::write(const std::string& path) const
                   H5Aclose);
       checkWrite(H5Awrite(attr.get(), type.get(), format.data()), "H5Awrite", "format", tmp);
     }
+    {
+      // The integrity check of read(): a checksum of every dataset (docs/output.md).
+      const unsigned long long sum = checksum();
+      Handle space(checkWrite(H5Screate(H5S_SCALAR), "H5Screate", "checksum", tmp), H5Sclose);
+      Handle attr(checkWrite(H5Acreate2(file.get(), "checksum", H5T_STD_U64LE, space.get(),
+                                        H5P_DEFAULT, H5P_DEFAULT),
+                             "H5Acreate2", "checksum", tmp),
+                  H5Aclose);
+      checkWrite(H5Awrite(attr.get(), H5T_NATIVE_ULLONG, &sum), "H5Awrite", "checksum", tmp);
+    }
     for (const auto& [name, v] : ints_)
       writeDataset(file.get(), name, H5T_NATIVE_LLONG, H5T_STD_I64LE, v.size(), v.data(), tmp);
     for (const auto& [name, v] : doubles_)
@@ -183,6 +235,17 @@ CheckpointFile CheckpointFile::read(const std::string& path)
     SC_THROW_IF(format != formatName(), sc::core::InputError,
                 bad("its format is '" + format + "', not '" + formatName() + "'"));
   }
+  unsigned long long recorded = 0;
+  {
+    SC_THROW_IF(H5Aexists(file.get(), "checksum") <= 0, sc::core::InputError,
+                bad("no 'checksum' attribute (written by an older version?)"));
+    Handle attr(H5Aopen(file.get(), "checksum", H5P_DEFAULT), H5Aclose);
+    Handle type(attr.get() >= 0 ? H5Aget_type(attr.get()) : -1, H5Tclose);
+    SC_THROW_IF(type.get() < 0 || H5Tget_class(type.get()) != H5T_INTEGER ||
+                    H5Tget_size(type.get()) != 8 ||
+                    H5Aread(attr.get(), H5T_NATIVE_ULLONG, &recorded) < 0,
+                sc::core::InputError, bad("its 'checksum' attribute cannot be read"));
+  }
   std::vector<std::string> names;
   SC_THROW_IF(H5Literate(file.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collectName, &names) < 0,
               sc::core::InputError, bad("cannot list its datasets"));
@@ -219,6 +282,17 @@ CheckpointFile CheckpointFile::read(const std::string& path)
       SC_THROW_IF(true, sc::core::InputError, bad("dataset '" + name + "' has an unexpected type"));
     }
     SC_THROW_IF(status < 0, sc::core::InputError, bad("H5Dread failed for '" + name + "'"));
+  }
+  // Before the caller trusts anything (and before a restart removes the killed cycle's files):
+  // a changed byte anywhere in the datasets (a flipped bit, an edited coordinate) is refused.
+  const unsigned long long computed = cp.checksum();
+  if (computed != recorded) {
+    std::ostringstream os;
+    os << std::hex << "the checkpoint '" << path << "' fails its integrity check: its datasets "
+       << "hash to 0x" << computed << ", the file records 0x" << recorded
+       << " (damaged or edited since it was written); nothing was changed in its directory. "
+       << "Run the deck again (without --restart), or restart from an intact copy";
+    SC_THROW_IF(true, sc::core::InputError, os.str());
   }
   return cp;
 }

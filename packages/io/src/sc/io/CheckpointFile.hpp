@@ -6,7 +6,9 @@
 // keeps the mesh, the contact state and the summary in it).
 //
 // Layout: one 1-D dataset per entry at the root, int64 ("ints"), float64 ("doubles") or uint8
-// (strings, UTF-8 bytes, no terminator), and the root attribute "format" = formatName().
+// (strings, UTF-8 bytes, no terminator), the root attribute "format" = formatName() and the root
+// attribute "checksum" (uint64, checksum()): read() verifies it, so that a damaged or edited
+// checkpoint is refused before a restart changes anything.
 
 #include <map>
 #include <string>
@@ -37,6 +39,10 @@ public:
   /// Not collective: read every entry of \p path. Throws sc::core::InputError naming the file if
   /// it is missing, not an HDF5 file, or not a checkpoint.
   static CheckpointFile read(const std::string& path);
+
+  /// FNV-1a (64 bits) over every entry's kind, name, length and bytes. write() records it in the
+  /// root attribute "checksum"; read() refuses a file whose datasets do not hash to it.
+  unsigned long long checksum() const;
 
   /// The file this was read from (quoted in errors), empty for one being built.
   const std::string& path() const { return path_; }
