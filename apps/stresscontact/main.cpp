@@ -23,6 +23,7 @@
 
 #include <sc/core/Error.hpp>
 #include <sc/core/FloatingPointTraps.hpp>
+#include <sc/io/MpiIoEnvironment.hpp>
 
 #include "DeckParameters.hpp"
 #include "Simulation.hpp"
@@ -152,6 +153,9 @@ private:
 
 int main(int argc, char* argv[])
 {
+  // Before MPI_Init: keeps Open MPI from an MPI-IO component that overflows a buffer on paths
+  // over 244 characters (sc/io/MpiIoEnvironment.hpp).
+  sc::io::leaveOutOverflowingMpiIoComponents();
   Teuchos::GlobalMPISession mpiSession(&argc, &argv, nullptr);
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int rank = comm->getRank();

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -115,6 +117,40 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RunFileNamesTakenByDirectoriesAreInputErrors)
   TEST_ASSERT(e.find("(1 more such name(s) there)") != std::string::npos);
   // An earlier run's summary.json that is a directory is neither read nor removed.
   TEST_EQUALITY(sc::io::removeEarlierRunFiles(dir, "fields").size(), 0u);
+  fs::remove_all(dir);
+}
+
+TEUCHOS_UNIT_TEST(OutputDirectory, FileNameLengthsAreChecked)
+{
+  const std::string dir = freshDirectory("lengths");
+  auto error = [](const std::string& directory, const std::string& base) {
+    try {
+      sc::io::checkRunFileNameLengths(directory, base);
+    } catch (const sc::core::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // "<base>_c0000.h5.tmp.<7-digit pid>" adds 21 characters to the Base name.
+  const long nameMax = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  const long longest = nameMax - 21;
+  TEST_EQUALITY(error(dir, std::string(static_cast<std::size_t>(longest), 'b')), "");
+  const std::string e = error(dir, std::string(static_cast<std::size_t>(longest + 1), 'b'));
+  out << e << "\n";
+  TEST_ASSERT(e.find("Output/Base name is " + std::to_string(longest + 1) + " characters long") != std::string::npos);
+  TEST_ASSERT(e.find("above the limit of " + std::to_string(nameMax) + " per file name (NAME_MAX)") != std::string::npos);
+  TEST_ASSERT(e.find("at most " + std::to_string(longest) + " characters") != std::string::npos);
+  // A directory (not created) whose files' paths would exceed PATH_MAX.
+  std::string deep = dir;
+  while (deep.size() < 4080)
+    deep += "/" + std::string(100, 'd');
+  const std::string p = error(deep, "solution");
+  out << p.substr(0, 200) << "\n";
+  TEST_ASSERT(p.find("the output directory (Output/Directory, " + std::to_string(deep.size()) +
+                     " characters) is too long") != std::string::npos);
+  TEST_ASSERT(p.find("(PATH_MAX)") != std::string::npos);
+  TEST_EQUALITY(error(dir + "/" + std::string(200, 'd'), "solution"), "");
+  TEST_EQUALITY(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
   fs::remove_all(dir);
 }
 

@@ -17,11 +17,15 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <sys/resource.h>
 #include <sys/statvfs.h>
+#include <climits>
 #include <unistd.h>
 
 namespace sc::io {
 
 namespace {
+
+// The longest name of the run's files that does not depend on Output/Base name.
+constexpr const char* kLongestFixedName = "stresscontact.lock.stale.4194304";
 
 // Probe by creating a file: access(W_OK) says yes to root on read-only mounts and special
 // file systems. Returns "" or the reason the file could not be created.
@@ -246,7 +250,52 @@ void checkRunFileNamesAreFree(const std::string& directory, const std::string& b
 void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName,
                               const Teuchos::Comm<int>& comm)
 {
-  runOnRoot(comm, [&] { checkRunFileNamesAreFree(directory, baseName); });
+  runOnRoot(comm, [&] {
+    checkRunFileNameLengths(directory, baseName);
+    checkRunFileNamesAreFree(directory, baseName);
+  });
+}
+
+void checkRunFileNameLengths(const std::string& directory, const std::string& baseName)
+{
+  namespace fs = std::filesystem;
+  // Linux pids are below 2^22 (pid_max), so at most 7 digits; cycles have 4 (Adaptivity/Cycles
+  // is at most 100).
+  const std::string suffix = "_c0000.h5.tmp.4194304";
+  const std::string longestName =
+      std::max(baseName + suffix, std::string(kLongestFixedName), [](const auto& a, const auto& b) {
+        return a.size() < b.size();
+      });
+  std::error_code ec;
+  fs::path existing = directory;
+  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing.parent_path() != existing)
+    existing = existing.parent_path();
+  if (!fs::exists(existing, ec))
+    existing = ".";
+  long nameMax = ::pathconf(existing.c_str(), _PC_NAME_MAX);
+  long pathMax = ::pathconf(existing.c_str(), _PC_PATH_MAX);
+  if (nameMax <= 0)
+    nameMax = NAME_MAX;
+  if (pathMax <= 0)
+    pathMax = PATH_MAX;
+  const long nameLength = static_cast<long>(longestName.size());
+  SC_THROW_IF(nameLength > nameMax, sc::core::InputError,
+              "Output/Base name is " << baseName.size() << " characters long: the run's field "
+                                     << "files, <Base name>_c<NNNN>.h5 written as "
+                                     << "<Base name>_c<NNNN>.h5.tmp.<pid>, would have names of up "
+                                     << "to " << nameLength << " characters, above the limit of "
+                                     << nameMax << " per file name (NAME_MAX) of the file system "
+                                     << "holding '" << existing.string() << "'. Give a Base name "
+                                     << "of at most " << nameMax - static_cast<long>(suffix.size())
+                                     << " characters.");
+  const std::string longestPath = (fs::path(directory) / longestName).string();
+  const long pathLength = static_cast<long>(longestPath.size());
+  SC_THROW_IF(pathLength >= pathMax, sc::core::InputError,
+              "the output directory (Output/Directory, " << directory.size() << " characters) is "
+                  << "too long: with the run's longest file name, " << longestName
+                  << ", the path would have " << pathLength << " characters, above the limit of "
+                  << pathMax - 1 << " per path (PATH_MAX). Choose a shorter directory or Base "
+                  << "name. The directory: '" << directory << "'");
 }
 
 void checkOutputDirectory(const std::string& directory)

@@ -61,9 +61,18 @@ void checkRoomForFile(const std::string& directory, const std::string& path,
 /// Writes nothing (run and --check alike).
 void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName);
 
-/// Collective version: rank 0 checks, every rank throws the same error on failure.
+/// Collective version: rank 0 checks, every rank throws the same error on failure. Checks
+/// checkRunFileNameLengths too.
 void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName,
                               const Teuchos::Comm<int>& comm);
+
+/// Do the names and paths of the files a run writes in \p directory fit the file system's
+/// limits (pathconf: NAME_MAX per name, PATH_MAX per path; those of the nearest existing
+/// ancestor if \p directory does not exist yet)? The longest is a cycle's field file under its
+/// temporary name, `<base>_c<NNNN>.h5.tmp.<pid>` (pid up to 7 digits). Throws
+/// sc::core::InputError naming Output/Base name or Output/Directory, the length and the limit:
+/// otherwise the first field file fails after the first solve. Writes nothing.
+void checkRunFileNameLengths(const std::string& directory, const std::string& baseName);
 
 /// `--check`: would createOutputDirectory(\p directory) succeed? Creates nothing: an existing
 /// directory, or else its nearest existing ancestor, must be a directory in which a file can be
