@@ -657,6 +657,18 @@ TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
   cs.obstacleNormal = {0.0, 1.0};
   cs.obstaclePoint = {0.0, 0.5};  // half the body inside the plane
   TEST_THROW(sc::contact::checkObstacle(*m, cs, {"Arc"}), sc::core::InputError);
+  // A plane through the middle of the body with the normal away from most of it is named as such
+  // (it used to advise "the opposite vector", which cuts the body too: the deep overlap above).
+  for (double ny : {-1.0}) {
+    cs.obstacleNormal = {0.0, ny};
+    try {
+      sc::contact::checkObstacle(*m, cs, {"Arc"});
+      TEST_ASSERT(false);
+    } catch (const sc::core::InputError& e) {
+      out << e.what() << "\n";
+      TEST_ASSERT(std::string(e.what()).find("give a plane through the body") != std::string::npos);
+    }
+  }
 }
 
 #endif  // !SC_HERTZ_3D

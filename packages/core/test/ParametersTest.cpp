@@ -173,6 +173,28 @@ TEUCHOS_UNIT_TEST(Parameters, MissingAndMalformedFiles)
   std::remove(path.c_str());
 }
 
+// A UTF-8 byte-order mark before the XML is skipped (Teuchos alone said "character data outside
+// of an enclosing tag"); a UTF-16 deck is refused by name.
+TEUCHOS_UNIT_TEST(Parameters, ByteOrderMarks)
+{
+  const std::string body = "<ParameterList name=\"StressContact\">\n  <ParameterList name=\"Material\">\n"
+                           "    <Parameter name=\"Poisson ratio\" type=\"double\" value=\"0.3\"/>\n"
+                           "  </ParameterList>\n</ParameterList>\n";
+  const std::string path = "core_unit_tests_bom.xml";
+  std::ofstream(path, std::ios::binary) << "\xEF\xBB\xBF" << body;
+  const auto list = sc::core::readParameterFile(path);
+  TEST_FLOATING_EQUALITY(list->sublist("Material").get<double>("Poisson ratio"), 0.3, 1e-15);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << "\xFF\xFE<\0P\0";
+  try {
+    sc::core::readParameterFile(path);
+    TEST_ASSERT(false);
+  } catch (const sc::core::InputError& e) {
+    out << e.what() << "\n";
+    TEST_ASSERT(contains(e.what(), "is UTF-16 text"));
+  }
+  std::remove(path.c_str());
+}
+
 namespace {
 
 // The error readParameterFile gives for a one-list deck with the given <Parameter>s ("" if none).

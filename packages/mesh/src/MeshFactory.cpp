@@ -64,7 +64,11 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
                          "Gmsh files. 1: straight-sided (affine) elements everywhere (the talk's "
                          "'straight boundaries' study, with Project boundary = false)",
                          1, 2);
-    sc::core::declareReal(*p, "Radius", 1.0, "Radius R of the Half disc / Half ball", 0.0, true);
+    sc::core::declareReal(*p, "Radius", 1.0,
+                          "Radius R of the Half disc / Half ball. At least 1e-5: OpenCASCADE, "
+                          "which builds the scene, works to an absolute tolerance of 1e-7 (R = "
+                          "1e-6 could not be meshed); scale the length unit for smaller bodies",
+                          1e-5, false);
     sc::core::declareString(*p, "File", "",
                             "Source = Gmsh file: a .msh file (format 2.2 or 4.1), read as data. "
                             "Source = Gmsh geometry: a .geo script, run by Gmsh. Relative paths "

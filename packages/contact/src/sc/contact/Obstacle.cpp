@@ -100,6 +100,16 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
       contactLo = std::min(contactLo, obstacle->height(m.vertex(m.faceVertices(f)[i])));
   }
   const double mean = sum / std::max(1, m.numVertices());
+  // The body mostly behind the plane but partly in front, well beyond the overlap allowed: a
+  // plane through the body, which the opposite normal would not mend either.
+  const double reach = kMaxInitialOverlap * (hi - lo);
+  SC_THROW_IF(mean <= 0.0 && lo < -reach && hi > reach, core::InputError,
+              "'Contact/Obstacle point' = " << vec(settings.obstaclePoint) << " and 'Contact/Obstacle "
+                  "normal' = " << vec(settings.obstacleNormal) << " give a plane through the body: it "
+                  "extends " << -lo << " beyond the plane and " << hi << " in front of it, along the "
+                  "normal. Place the plane at the contact boundary ("
+                  << (contactBoundaries.empty() ? std::string("the Contact parts") : "'" + contactBoundaries[0] + "'")
+                  << "), with the normal pointing from the obstacle towards the body.");
   SC_THROW_IF(mean <= 0.0, core::InputError,
               "'Contact/Obstacle normal' = " << vec(settings.obstacleNormal)
                   << " points away from the body: the body lies on the plane's far side (mean "

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include <Teuchos_FileInputSource.hpp>
+#include <Teuchos_StringInputSource.hpp>
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListReader.hpp>
 
@@ -636,8 +637,16 @@ Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path)
   // Teuchos converts the XML tree to a parameter list recursively, and so does checkXmlList: a
   // deck nested some 10,000 levels deep overflowed the stack. The depth is therefore measured on
   // the text, before Teuchos builds anything from it.
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // A UTF-8 byte-order mark (some Windows editors write one) is not XML to Teuchos' reader, whose
+  // message ("character data outside of an enclosing tag") did not mention it: it is skipped. A
+  // UTF-16 deck is refused by name.
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    text.erase(0, 3);
+  SC_THROW_IF(text.compare(0, 2, "\xFF\xFE") == 0 || text.compare(0, 2, "\xFE\xFF") == 0, InputError,
+              "the input deck '" << path << "' is UTF-16 text (it starts with a UTF-16 byte-order "
+                                 << "mark); save it as UTF-8.");
   {
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const int depth = xmlNestingDepth(text);
     SC_THROW_IF(depth > kMaxDeckNestingDepth, InputError,
                 "the input deck '" << path << "' nests its XML elements " << depth
@@ -647,7 +656,7 @@ Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path)
   }
   Teuchos::XMLObject xml;
   try {
-    xml = Teuchos::FileInputSource(path).getObject();
+    xml = Teuchos::StringInputSource(text).getObject();  // the text checked above
   } catch (const std::exception& e) {
     SC_THROW_IF(true, InputError,
                 "the input deck '" << path << "' is not a valid Teuchos XML parameter list: "
