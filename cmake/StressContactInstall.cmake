@@ -14,4 +14,5 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/StressContactConfig.cmake
               ${CMAKE_CURRENT_LIST_DIR}/FindMETIS.cmake
               ${CMAKE_CURRENT_LIST_DIR}/FindGmsh.cmake
               ${CMAKE_CURRENT_LIST_DIR}/FindMUMPS.cmake
+              ${CMAKE_CURRENT_LIST_DIR}/FindMuparser.cmake
         DESTINATION ${SC_CMAKE_INSTALL_DIR})

@@ -13,6 +13,7 @@ SC_DEBIAN_PACKAGES=(
   openmpi-bin libopenmpi-dev
   trilinos-all-dev trilinos-dev libptscotch-dev libscotch-dev
   libhdf5-openmpi-dev libmetis-dev libgmsh-dev libmumps-dev libopenblas0-serial libboost-dev nlohmann-json3-dev
+  libmuparser-dev
 )
 
 sc_log() { printf '[stresscontact setup] %s\n' "$*"; }
