@@ -55,7 +55,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
 {
   problem_ = core::ProblemSettings::fromParameters(params_->sublist("Problem"));
   const int dim = problem_.dimension;
-  material_ = core::Material::fromParameters(params_->sublist("Material"));
+  material_ = core::Material::fromParameters(params_->sublist("Material"), dim);
   boundaryConditions_ =
       core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
   // Contact data is read (and checked against the dimension) only if the scene has contact.
@@ -554,8 +554,10 @@ void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std
     const std::string source = meshList.get<std::string>("Source");
     if ((source == "Half disc" || source == "Half ball") && !contact_.needsFriction() &&
         force[d - 1] > 0.0) {
+      // Plane stress: E* = E, Hertz's plane-strain E/(1 − ν²) at ν = 0.
       const auto h = contact::hertzFromLoad(d, force[d - 1], material_.youngModulus,
-                                            material_.poissonRatio, meshList.get<double>("Radius"));
+                                            material_.planeStress ? 0.0 : material_.poissonRatio,
+                                            meshList.get<double>("Radius"));
       c["contact"]["hertz"] = {{d == 2 ? "half_width" : "radius", h.halfWidth},
                                {"max_pressure", h.maxPressure},
                                {d == 2 ? "half_width_ratio" : "radius_ratio",

@@ -105,3 +105,19 @@ TEUCHOS_UNIT_TEST(ExactSolution, LinearPatchSatisfiesEquations)
   TEST_THROW(sc::core::createExactSolution("Quadratic", 2, sc::core::Material{}),
              sc::core::InputError);
 }
+
+// Plane stress (Material/Plane = Stress): the same identities with the plane-stress compliance
+// Aσ = ((1+ν)σ − ν tr(σ) I)/E (c_d = ν/(1+ν), checkSolution uses complianceCoefficient), for
+// the manufactured and the patch solutions, also at ν = 0.5 where plane stress stays
+// compressible (the effective λ* = 2μν/(1 − ν) is finite).
+TEUCHOS_UNIT_TEST(ExactSolution, PlaneStressSatisfiesEquations)
+{
+  for (double nu : {0.3, 0.5}) {
+    sc::core::Material m{20600.0, nu, true};
+    TEST_FLOATING_EQUALITY(m.complianceCoefficient(2), nu / (1 + nu), 1e-15);
+    sc::core::SmoothManufacturedSolution s(2, m);
+    checkSolution(s, m, 2, out, success);
+    sc::core::LinearPatchSolution p(2, m);
+    checkSolution(p, m, 2, out, success);
+  }
+}

@@ -1,6 +1,8 @@
 // Unit tests of the scene data: compliance coefficient c_d, Hertz modulus, boundary conditions
 // against the problem dimension and the mesh's boundary names (the Contact settings are tested
 // in the contact package).
+#include <functional>
+
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include "sc/core/Error.hpp"
@@ -67,4 +69,58 @@ TEUCHOS_UNIT_TEST(ProblemData, IncompressiblePureDisplacementIsAnInputError)
   bcs.checkPressureDetermined({"Top", "Arc", "Side"}, incompressible);  // "Side": traction free
   bcs.conditions[1].type = sc::core::BoundaryType::Contact;
   bcs.checkPressureDetermined({"Top", "Arc"}, incompressible);
+}
+
+namespace {
+ParameterList validated(ParameterList bc)
+{
+  ParameterList valid = *sc::core::BoundaryConditions::getValidParameters();
+  sc::core::validateParameters(bc, valid, "test");
+  return bc;
+}
+
+std::string inputErrorOf(const std::function<void()>& f)
+{
+  try {
+    f();
+  } catch (const sc::core::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+// Plane stress: Aσ = ((1+ν)σ − ν tr(σ) I)/E (analytic, σ_zz = 0) is c_d = ν/(1+ν); 3D rejects it.
+TEUCHOS_UNIT_TEST(ProblemData, PlaneStress)
+{
+  ParameterList material;
+  material.set("Young modulus", 2.0);
+  material.set("Poisson ratio", 0.25);
+  material.set("Plane", std::string("Stress"));
+  ParameterList valid = *sc::core::Material::getValidParameters();
+  sc::core::validateParameters(material, valid, "test");
+  const auto m = sc::core::Material::fromParameters(material, 2);
+  TEST_ASSERT(m.planeStress);
+  // A applied to σ = diag(1, 0): ε_xx = 1/E, ε_yy = −ν/E.
+  const double cd = m.complianceCoefficient(2), twoMu = 2 * m.shearModulus();
+  TEST_FLOATING_EQUALITY((1.0 - cd) / twoMu, 1.0 / 2.0, 1e-15);
+  TEST_FLOATING_EQUALITY(-cd / twoMu, -0.25 / 2.0, 1e-15);
+  // Plane strain (the default): ε_xx = (1 − ν²)/E.
+  const sc::core::Material strain{2.0, 0.25};
+  TEST_FLOATING_EQUALITY((1.0 - strain.complianceCoefficient(2)) / (2 * strain.shearModulus()),
+                         (1 - 0.25 * 0.25) / 2.0, 1e-15);
+  const std::string msg = inputErrorOf([&] { sc::core::Material::fromParameters(material, 3); });
+  TEST_ASSERT(msg.find("'Material/Plane' = 'Stress' is a 2D model") != std::string::npos);
+  // ν = 0.5 in plane stress keeps A I ≠ 0: no pressure check.
+  const sc::core::Material stress05{1.0, 0.5, true};
+  auto bcs = sc::core::BoundaryConditions::fromParameters(
+      validated([] {
+        ParameterList bc;
+        bc.sublist("Top").set("Type", std::string("Displacement"));
+        bc.sublist("Top").set("Value", Teuchos::Array<double>(2, 0.0));
+        return bc;
+      }()),
+      2);
+  bcs.checkPressureDetermined({"Top"}, stress05);
+  TEST_THROW(bcs.checkPressureDetermined({"Top"}, sc::core::Material{1.0, 0.5}), sc::core::InputError);
 }

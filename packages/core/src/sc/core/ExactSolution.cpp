@@ -42,8 +42,10 @@ SmoothManufacturedSolution::SmoothManufacturedSolution(int dim, const Material& 
   SC_THROW_IF(m.poissonRatio <= 0.0, InputError,
               "the manufactured solution u = u0 + (1/λ)∇φ needs λ > 0, i.e. 'Material/Poisson "
               "ratio' > 0 (got " << m.poissonRatio << ").");
-  // 1/λ = (1 − 2ν)/(2μν) for plane strain and 3D alike; exactly 0 at ν = 0.5.
-  inverseLambda_ = (1.0 - 2.0 * m.poissonRatio) / (2.0 * mu_ * m.poissonRatio);
+  // 1/λ = (1 − 2ν)/(2μν) for plane strain and 3D alike; exactly 0 at ν = 0.5. Plane stress
+  // has the effective λ* = 2μν/(1 − ν) (c_d = λ*/(2λ* + 2μ) = ν/(1 + ν)).
+  const double numerator = dim == 2 && m.planeStress ? 1.0 - m.poissonRatio : 1.0 - 2.0 * m.poissonRatio;
+  inverseLambda_ = numerator / (2.0 * mu_ * m.poissonRatio);
 }
 
 void SmoothManufacturedSolution::u0AndGradient(const double* x, double* u0, double* g) const
@@ -171,9 +173,16 @@ double L(int i, int j)
 LinearPatchSolution::LinearPatchSolution(int dim, const Material& material)
   : dim_(dim), material_(material)
 {
-  SC_THROW_IF(material.poissonRatio >= 0.5, InputError,
+  SC_THROW_IF(material.poissonRatio >= 0.5 && !(dim == 2 && material.planeStress), InputError,
               "the linear patch solution is built from u through Hooke's law and needs ν < 0.5 "
               "(got " << material.poissonRatio << ").");
+}
+
+double LinearPatchSolution::lameLambda() const
+{
+  // λ = 2μν/(1 − 2ν); plane stress: the effective λ* = 2μν/(1 − ν).
+  const double mu = material_.shearModulus(), nu = material_.poissonRatio;
+  return 2.0 * mu * nu / (dim_ == 2 && material_.planeStress ? 1.0 - nu : 1.0 - 2.0 * nu);
 }
 
 void LinearPatchSolution::displacement(const double* x, double* u) const
@@ -192,8 +201,7 @@ void LinearPatchSolution::stress(const double* x, double* sigma) const
 {
   const int d = dim_;
   const double mu = material_.shearModulus();
-  const double nu = material_.poissonRatio;
-  const double lambda = 2.0 * mu * nu / (1.0 - 2.0 * nu);
+  const double lambda = lameLambda();
   double g[9];
   displacementGradient(x, g);
   double div = 0.0;
@@ -227,8 +235,7 @@ void LinearPatchSolution::bodyForce(const double*, double* f) const
   // div σ_i = μ Σ_j H_ijj + (μ + λ) Σ_j H_jji with H_ijk = ∂_j∂_k u_i = Q_ijk + Q_ikj.
   const int d = dim_;
   const double mu = material_.shearModulus();
-  const double nu = material_.poissonRatio;
-  const double lambda = 2.0 * mu * nu / (1.0 - 2.0 * nu);
+  const double lambda = lameLambda();
   auto H = [](int i, int j, int k) { return Q(i, j, k) + Q(i, k, j); };
   for (int i = 0; i < d; ++i) {
     double div = 0.0;

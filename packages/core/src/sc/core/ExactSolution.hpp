@@ -76,6 +76,7 @@ public:
   void displacementGradient(const double* x, double* gradU) const;
 
 private:
+  double lameLambda() const;
   int dim_;
   Material material_;
 };

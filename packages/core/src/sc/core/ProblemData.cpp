@@ -71,16 +71,27 @@ Teuchos::RCP<const Teuchos::ParameterList> Material::getValidParameters()
                 "Poisson's ratio ν in [0, 0.5]; 0.5 (incompressible) is valid: the method never "
                 "forms λ (docs/theory.md §\"The problem\").",
                 0.0, false, 0.5, false);
+    declareChoice(*pl, "Plane", "Strain", {"Strain", "Stress"},
+                  "2D only: plane strain (ε_zz = 0, a long body) or plane stress (σ_zz = 0, a thin "
+                  "plate): the compliance is Aσ = ((1+ν)σ − ν tr(σ) I)/E in plane stress and "
+                  "(1/2μ)(σ − ν tr(σ) I) in plane strain (docs/theory.md §\"Loads and "
+                  "supports\"). 'Stress' in 3D is an input error.");
     return pl;
   }();
   return valid;
 }
 
-Material Material::fromParameters(const Teuchos::ParameterList& pl)
+Material Material::fromParameters(const Teuchos::ParameterList& pl, int dimension)
 {
   Material m;
   m.youngModulus = pl.get<double>("Young modulus");
   m.poissonRatio = pl.get<double>("Poisson ratio");
+  m.planeStress = pl.isParameter("Plane") && pl.get<std::string>("Plane") == "Stress";
+  SC_THROW_IF(m.planeStress && dimension != 2, InputError,
+              "'Material/Plane' = 'Stress' is a 2D model (a thin plate, σ_zz = 0), but "
+              "Problem/Dimension is "
+                  << dimension << ": remove the key or give 'Strain' (a 3D body has no plane "
+                  << "model).");
   return m;
 }
 
@@ -180,7 +191,8 @@ const BoundaryCondition* BoundaryConditions::find(const std::string& boundary) c
 void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>& meshBoundaries,
                                                  const Material& material) const
 {
-  if (material.poissonRatio < 0.5)
+  // Plane stress (a 2D-only flag) keeps A I ≠ 0 at ν = 0.5.
+  if (material.poissonRatio < 0.5 || material.planeStress)
     return;
   for (const auto& name : meshBoundaries) {
     const auto it = std::find_if(conditions.begin(), conditions.end(),

@@ -26,15 +26,21 @@ struct ProblemSettings {
 };
 
 /// Isotropic linear elastic material given by E and ν. λ is never formed (docs/theory.md §"The
-/// problem"), so ν = 0.5 (incompressible) is valid.
+/// problem"), so ν = 0.5 (incompressible) is valid. In 2D the body is in plane strain (ε_zz = 0)
+/// or, with `Plane` = `Stress`, in plane stress (σ_zz = 0, a thin plate); docs/theory.md §"Loads
+/// and supports".
 struct Material {
   double youngModulus = 1.0;
   double poissonRatio = 0.3;
+  bool planeStress = false;  ///< 2D only ("Material/Plane" = "Stress"); ignored in 3D
 
   double shearModulus() const { return youngModulus / (2.0 * (1.0 + poissonRatio)); }
-  /// c_d = ν / (1 + (d − 2)ν) in Aτ = (1/2μ)(τ − c_d tr(τ) I) (plane strain for d = 2).
+  /// c_d in Aτ = (1/2μ)(τ − c_d tr(τ) I): ν / (1 + (d − 2)ν) for plane strain (d = 2) and 3D;
+  /// ν / (1 + ν) for plane stress, where Aσ = ((1 + ν)σ − ν tr(σ) I)/E.
   double complianceCoefficient(int dim) const
   {
+    if (dim == 2 && planeStress)
+      return poissonRatio / (1.0 + poissonRatio);
     return poissonRatio / (1.0 + (dim - 2) * poissonRatio);
   }
   /// Aτ:τ = (1/2μ)(|τ|² − c_d (tr τ)²) for a d×d row-major τ: the compliance energy density, in
@@ -54,7 +60,8 @@ struct Material {
     return youngModulus / (1.0 - poissonRatio * poissonRatio);
   }
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  static Material fromParameters(const Teuchos::ParameterList& materialList);
+  /// `dimension` = Problem/Dimension: Plane = Stress in 3D is an InputError.
+  static Material fromParameters(const Teuchos::ParameterList& materialList, int dimension = 2);
 };
 
 enum class BoundaryType { Displacement, Traction, Contact, Free };
