@@ -39,6 +39,8 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
     add("Material", core::Material::getValidParameters(), "Isotropic linear elastic material.");
     add("Boundary Conditions", core::BoundaryConditions::getValidParameters(),
         "One sublist per boundary part of the mesh.");
+    add("Body Force", core::BodyForce::getValidParameters(),
+        "Body force f in div σ + f = 0, e.g. gravity (docs/user-guide.md \"Loads and supports\").");
     add("Contact", contact::ContactSettings::getValidParameters(),
         "Rigid obstacle and friction law, for boundary parts of Type Contact (docs/theory.md §\"Contact and friction\").");
     add("Discretization", core::DiscretizationSettings::getValidParameters(),

@@ -16,6 +16,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <sc/adapt/AdaptiveLoop.hpp>
+#include <sc/assembly/LoadsAndSupports.hpp>
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/assembly/Multigrid.hpp>
@@ -58,6 +59,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   material_ = core::Material::fromParameters(params_->sublist("Material"), dim);
   boundaryConditions_ =
       core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
+  bodyForce_ = core::BodyForce::fromParameters(params_->sublist("Body Force"), problem_);
   // Contact data is read (and checked against the dimension) only if the scene has contact.
   if (boundaryConditions_.hasContact())
     contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
@@ -116,7 +118,10 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
   // is ill-posed here). Say so now rather than let the solver fail (docs/reliability.md).
-  if (boundaryConditions_.boundariesOfType(core::BoundaryType::Displacement).empty()) {
+  // Symmetry parts can fix them too when they are normal to every axis (checked with the mesh,
+  // assembly::checkLoadsAndSupports).
+  if (boundaryConditions_.boundariesOfType(core::BoundaryType::Displacement).empty() &&
+      boundaryConditions_.boundariesOfType(core::BoundaryType::Symmetry).empty()) {
     std::ostringstream given;
     for (const auto& bc : boundaryConditions_.conditions)
       given << (given.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' (" << core::toString(bc.type) << ")";
@@ -126,7 +131,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                     << "): rigid-body motions are not fixed and the problem is ill-posed in the "
                     << "stress-based formulation (contact and tractions do not fix them). Give at "
                     << "least one boundary part <ParameterList name=\"...\"> with Type = "
-                    << "'Displacement' and a Value.");
+                    << "'Displacement' and a Value, or Type 'Symmetry' on parts normal to every "
+                    << "axis.");
   }
 
   exact_ = core::createExactSolution(problem_.exactSolution, dim, material_,
@@ -187,6 +193,7 @@ void Simulation::setupMesh()
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
+  assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_});
   if (boundaryConditions_.hasContact())
     contact::checkObstacle(*mesh_, contact_,
                            boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
@@ -309,7 +316,7 @@ void Simulation::setupElasticity()
                                 (curved ? ", " + std::to_string(curved->numCurvedElements()) +
                                               " curved (quadratic) elements"
                                         : std::string()));
-  system_->assemble({material_, boundaryConditions_, exact_.get()});  // "assemble" phase
+  system_->assemble({material_, boundaryConditions_, exact_.get(), bodyForce_});  // "assemble" phase
   progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
 }
 
@@ -443,7 +450,7 @@ void Simulation::estimateError()
   stressEnergyError_ = -1.0;
   if (!solved_)
     return;
-  const assembly::ElasticityData data{material_, boundaryConditions_, exact_.get()};
+  const assembly::ElasticityData data{material_, boundaryConditions_, exact_.get(), bodyForce_};
   {
     auto t = timers_.scope("reconstruct");
     estimator_ = std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);

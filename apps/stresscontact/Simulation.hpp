@@ -152,6 +152,7 @@ private:
   core::ProblemSettings problem_;
   core::Material material_;
   core::BoundaryConditions boundaryConditions_;
+  core::BodyForce bodyForce_;  ///< "Body Force" (f = 0 when not given)
   contact::ContactSettings contact_;
   core::DiscretizationSettings discretization_;
   estimator::EstimatorSettings estimatorSettings_;

@@ -88,6 +88,14 @@ std::string inputErrorOf(const std::function<void()>& f)
   }
   return "";
 }
+
+Teuchos::Array<std::string> formulas(std::initializer_list<const char*> list)
+{
+  Teuchos::Array<std::string> a;
+  for (const char* f : list)
+    a.push_back(f);
+  return a;
+}
 }  // namespace
 
 // Plane stress: Aσ = ((1+ν)σ − ν tr(σ) I)/E (analytic, σ_zz = 0) is c_d = ν/(1+ν); 3D rejects it.
@@ -123,4 +131,124 @@ TEUCHOS_UNIT_TEST(ProblemData, PlaneStress)
       2);
   bcs.checkPressureDetermined({"Top"}, stress05);
   TEST_THROW(bcs.checkPressureDetermined({"Top"}, sc::core::Material{1.0, 0.5}), sc::core::InputError);
+}
+
+// The data of Displacement / Traction / Pressure: exactly one of Value, Expression and Data =
+// Exact solution; the counts; Symmetry takes none. Each error names the keys.
+TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataKeys)
+{
+  auto make = [](const std::string& type, const Teuchos::Array<double>& value,
+                 const Teuchos::Array<std::string>& expression) {
+    ParameterList bc;
+    bc.sublist("Top").set("Type", type);
+    if (!value.empty())
+      bc.sublist("Top").set("Value", value);
+    if (!expression.empty())
+      bc.sublist("Top").set("Expression", expression);
+    return validated(bc);
+  };
+  const Teuchos::Array<double> none, two(2, 1.0), one(1, 3.0);
+  auto error = [&](const std::string& type, const Teuchos::Array<double>& v,
+                   const Teuchos::Array<std::string>& e) {
+    return inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(make(type, v, e), 2); });
+  };
+  TEST_ASSERT(error("Traction", two, formulas({"0", "y"})).find(
+                  "'Boundary Conditions/Top/Value' and 'Boundary Conditions/Top/Expression' are "
+                  "both given") != std::string::npos);
+  TEST_ASSERT(error("Displacement", none, {}).find(
+                  "'Boundary Conditions/Top' (Type Displacement) has no data: give "
+                  "'Boundary Conditions/Top/Value'") != std::string::npos);
+  TEST_ASSERT(error("Pressure", two, {}).find("Type Pressure takes one") != std::string::npos);
+  TEST_ASSERT(error("Traction", none, formulas({"x"})).find(
+                  "'Boundary Conditions/Top/Expression' has 1 formulas, but Problem/Dimension is 2") !=
+              std::string::npos);
+  TEST_ASSERT(error("Symmetry", one, {}).find("'Boundary Conditions/Top/Value' is given, but "
+                                              "Type 'Symmetry' takes no data") != std::string::npos);
+  TEST_ASSERT(error("Free", none, formulas({"x"})).find("Type 'Free' takes no data") !=
+              std::string::npos);
+  {
+    ParameterList bc;
+    bc.sublist("Top").set("Type", std::string("Pressure"));
+    bc.sublist("Top").set("Data", std::string("Exact solution"));
+    TEST_ASSERT(inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(validated(bc), 2); })
+                    .find("'Boundary Conditions/Top/Data' = 'Exact solution' is for Type "
+                          "Displacement or Traction") != std::string::npos);
+  }
+  // A formula that does not compile fails at validation, naming the key and the entry.
+  {
+    ParameterList deck, valid;
+    ParameterList& bc = deck.sublist("Boundary Conditions");
+    bc.sublist("Top").set("Type", std::string("Traction"));
+    bc.sublist("Top").set("Expression", formulas({"0", "2*(y+"}));
+    valid.set("Boundary Conditions", *sc::core::BoundaryConditions::getValidParameters());
+    const std::string msg = inputErrorOf([&] { sc::core::validateParameters(deck, valid, "deck.xml"); });
+    TEST_ASSERT(msg.find("deck.xml: 'Boundary Conditions/Top/Expression' entry 2 = '2*(y+' is "
+                         "not a valid formula: Unexpected end of expression at position 6") !=
+                std::string::npos);
+  }
+}
+
+// Values of the data at a point (analytic): pressure −p n, formulas of x, y; Symmetry zero.
+TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataValues)
+{
+  ParameterList bc;
+  bc.sublist("Arc").set("Type", std::string("Pressure"));
+  bc.sublist("Arc").set("Expression", formulas({"2 + x*y"}));
+  bc.sublist("Top").set("Type", std::string("Displacement"));
+  bc.sublist("Top").set("Expression", formulas({"sin(pi*x)", "-0.01*y^2"}));
+  bc.sublist("Left").set("Type", std::string("Symmetry"));
+  bc.sublist("Right").set("Type", std::string("Traction"));
+  bc.sublist("Right").set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(1.5, 0.0)));
+  const auto bcs = sc::core::BoundaryConditions::fromParameters(validated(bc), 2);
+  const double x[2] = {0.5, 3.0}, n[2] = {0.6, -0.8};
+  double v[2];
+  bcs.find("Arc")->evaluate(x, n, 2, nullptr, v);
+  TEST_FLOATING_EQUALITY(v[0], -3.5 * 0.6, 1e-15);
+  TEST_FLOATING_EQUALITY(v[1], 3.5 * 0.8, 1e-15);
+  bcs.find("Top")->evaluate(x, n, 2, nullptr, v);
+  TEST_FLOATING_EQUALITY(v[0], 1.0, 1e-15);
+  TEST_FLOATING_EQUALITY(v[1], -0.09, 1e-14);
+  bcs.find("Left")->evaluate(x, n, 2, nullptr, v);
+  TEST_EQUALITY(v[0], 0.0);
+  TEST_EQUALITY(v[1], 0.0);
+  bcs.find("Right")->evaluate(x, n, 2, nullptr, v);
+  TEST_EQUALITY(v[0], 1.5);
+  TEST_ASSERT(!bcs.find("Right")->isZero());
+  TEST_ASSERT(bcs.find("Left")->isZero());
+  TEST_ASSERT(!bcs.find("Top")->isZero());
+}
+
+// Body Force: constants or formulas, one of them, d components, not beside an exact solution.
+TEUCHOS_UNIT_TEST(ProblemData, BodyForce)
+{
+  auto read = [](ParameterList list, const std::string& exact) {
+    ParameterList valid = *sc::core::BodyForce::getValidParameters();
+    sc::core::validateParameters(list, valid, "test");
+    sc::core::ProblemSettings problem;
+    problem.dimension = 2;
+    problem.exactSolution = exact;
+    return sc::core::BodyForce::fromParameters(list, problem);
+  };
+  TEST_ASSERT(read(ParameterList(), "None").isZero());
+  ParameterList gravity;
+  gravity.set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -9.81)));
+  const auto g = read(gravity, "None");
+  const double x[2] = {0.3, 0.7};
+  double f[2];
+  g.evaluate(x, 2, f);
+  TEST_EQUALITY(f[0], 0.0);
+  TEST_EQUALITY(f[1], -9.81);
+  ParameterList formula;
+  formula.set("Expression", formulas({"x", "-9.81*(2 - y)"}));
+  read(formula, "None").evaluate(x, 2, f);
+  TEST_FLOATING_EQUALITY(f[0], 0.3, 1e-15);
+  TEST_FLOATING_EQUALITY(f[1], -9.81 * 1.3, 1e-14);
+  TEST_ASSERT(inputErrorOf([&] { read(gravity, "Manufactured smooth"); })
+                  .find("'Body Force/Value' is given, but 'Problem/Exact solution' = 'Manufactured "
+                        "smooth' defines the body force") != std::string::npos);
+  ParameterList both = gravity;
+  both.set("Expression", formulas({"0", "-1"}));
+  TEST_ASSERT(inputErrorOf([&] { read(both, "None"); })
+                  .find("'Body Force/Value' and 'Body Force/Expression' are both given") !=
+              std::string::npos);
 }

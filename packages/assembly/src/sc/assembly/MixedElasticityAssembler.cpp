@@ -9,6 +9,7 @@
 #include <Tpetra_FEMultiVector.hpp>
 #include <Tpetra_Import.hpp>
 
+#include <sc/assembly/LoadsAndSupports.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -161,6 +162,9 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
                 "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution', but "
                     << "'Problem/Exact solution' is 'None'.");
   }
+  const bool bodyForce = data.hasBodyForce();
+  // The same on every rank (replicated mesh): a bad Symmetry part fails on all ranks together.
+  const auto symmetryAxis = symmetryAxes(m, data.boundaryConditions);
 
   disc::ElementValues ev(S, 2 * k + 2);
   disc::FaceValues fv(S, 2 * k + 2);
@@ -217,9 +221,9 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
             KK(S.stressOffset(t.row) + bb, S.rotationOffset(t.comp) + a) += v;
           }
         }
-      if (exact) {
+      if (bodyForce) {
         double f[3];
-        exact->bodyForce(ev.point(q), f);
+        data.bodyForceAt(ev.point(q), d, f);
         for (int i = 0; i < d; ++i)
           for (int a = 0; a < nDP; ++a)
             F[S.displacementOffset(i) + a] -= w * f[i] * ev.displacement(a, q);
@@ -233,7 +237,8 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
             KK(S.stressOffset(i) + a, S.stressOffset(j) + bb) +=
                 inv2mu * ((i == j ? G[a * nRT + bb] : 0.0) - cd * P[((i * d + j) * nRT + a) * nRT + bb]);
 
-    // Boundary faces: natural u_D, essential t (projected) and free (t = 0).
+    // Boundary faces: natural u_D, essential t (projected; −p n for a pressure), free (t = 0),
+    // and Symmetry (the tangential rows zero).
     const int* faces = m.elementFaces(e);
     for (int lf = 0; lf <= d; ++lf) {
       const int f = faces[lf];
@@ -253,32 +258,41 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
         fv.reinit(e, lf);
         for (int q = 0; q < fv.numPoints(); ++q) {
           double uD[3] = {0, 0, 0};
-          if (bc->fromExactSolution)
-            exact->displacement(fv.point(q), uD);
-          else
-            std::copy(bc->value.begin(), bc->value.end(), uD);
+          bc->evaluate(fv.point(q), fv.normal(q).data(), d, exact, uD);
           for (int i = 0; i < d; ++i)
             for (int a : faceDofs)
               F[S.stressOffset(i) + a] += fv.weight(q) * uD[i] * fv.stressNormal(a, q);
         }
         continue;
       }
-      // Traction or free: σ_i·n = t_i on the face, as the L² projection onto the normal traces
-      // of the face DOFs (only these have a non-zero normal trace on the face).
+      // Symmetry in x_a = const: σ_i·n = σ_ia n_a = 0 for the rows i ≠ a; row a stays free and
+      // its natural data u_a = 0 adds nothing to the right-hand side.
+      if (type == core::BoundaryType::Symmetry) {
+        const int a = symmetryAxis.at(bc->boundary);
+        for (int i = 0; i < d; ++i) {
+          if (i == a)
+            continue;
+          for (int l = 0; l < nF; ++l) {
+            const int c = S.stressOffset(i) + faceDofs[l];
+            constrained[c] = 1;
+            constrainedValue[c] = 0.0;
+          }
+        }
+        continue;
+      }
+      // Traction, pressure or free: σ_i·n = t_i on the face, as the L² projection onto the
+      // normal traces of the face DOFs (only these have a non-zero normal trace on the face).
+      // A pressure's t = −p n follows the face's normal at each quadrature point, which varies
+      // on a curved face.
       std::vector<double> values(static_cast<std::size_t>(d) * nF, 0.0);
-      const bool zero = type == core::BoundaryType::Free ||
-                        (!bc->fromExactSolution && std::all_of(bc->value.begin(), bc->value.end(),
-                                                               [](double v) { return v == 0.0; }));
+      const bool zero = type == core::BoundaryType::Free || bc->isZero();
       if (!zero) {
         fv.reinit(e, lf);
         std::vector<double> M(static_cast<std::size_t>(nF) * nF, 0.0);
         std::vector<std::vector<double>> rhs(d, std::vector<double>(nF, 0.0));
         for (int q = 0; q < fv.numPoints(); ++q) {
           double t[3] = {0, 0, 0};
-          if (bc->fromExactSolution)
-            exact->traction(fv.point(q), fv.normal(q).data(), t);
-          else
-            std::copy(bc->value.begin(), bc->value.end(), t);
+          bc->evaluate(fv.point(q), fv.normal(q).data(), d, exact, t);
           for (int l = 0; l < nF; ++l) {
             const double pl = fv.stressNormal(faceDofs[l], q);
             for (int j = 0; j < nF; ++j)

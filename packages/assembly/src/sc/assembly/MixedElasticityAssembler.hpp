@@ -7,10 +7,12 @@
 //
 // Each rank assembles its own elements into a Tpetra::FECrsMatrix (owned rows plus the shared
 // rows of its elements, summed across ranks at endAssembly). The traction condition σn = t on
-// Γ_N (and σn = 0 on free boundaries) is essential: the face DOFs of each row are set to the
-// L²(F) projection of t onto the face's normal traces, and eliminated symmetrically inside the
-// element matrix (a boundary face belongs to one element, so this is exact), which keeps the
-// system symmetric. λ is never formed: ν = 0.5 is fine.
+// Γ_N (t = −p n for a pressure, and σn = 0 on free boundaries) is essential: the face DOFs of
+// each row are set to the L²(F) projection of t onto the face's normal traces, and eliminated
+// symmetrically inside the element matrix (a boundary face belongs to one element, so this is
+// exact), which keeps the system symmetric. A Symmetry face in x_i = const fixes the rows j ≠ i
+// to zero the same way (zero tangential traction) and leaves row i free with u_i = 0 as its
+// natural (zero) data. λ is never formed: ν = 0.5 is fine.
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,11 +50,24 @@ const std::vector<AsymmetryTerm>& asymmetryTerms(int dim);
 
 /// The data the elasticity system needs. Boundary parts not named in `boundaryConditions` are
 /// traction-free. With an exact solution, f = −div σ comes from it, and boundary conditions with
-/// `fromExactSolution` take u_D or t from it.
+/// `fromExactSolution` take u_D or t from it; otherwise f is `bodyForce` (docs/theory.md §"Loads
+/// and supports"). The assembler and the estimator read f through bodyForceAt, so that both see
+/// the same load.
 struct ElasticityData {
   core::Material material;
   core::BoundaryConditions boundaryConditions;
   const core::ExactSolution* exactSolution = nullptr;
+  core::BodyForce bodyForce;
+
+  bool hasBodyForce() const { return exactSolution || !bodyForce.isZero(); }
+  /// f(x), d components (zero without an exact solution or a body force).
+  void bodyForceAt(const double* x, int dim, double* f) const
+  {
+    if (exactSolution)
+      exactSolution->bodyForce(x, f);
+    else
+      bodyForce.evaluate(x, dim, f);
+  }
 };
 
 struct AssemblyStatistics {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sc/core/Error.hpp"
+#include "sc/core/ExactSolution.hpp"
 #include "sc/core/Parameters.hpp"
 
 namespace sc::core {
@@ -101,6 +102,8 @@ std::string toString(BoundaryType type)
   switch (type) {
   case BoundaryType::Displacement: return "Displacement";
   case BoundaryType::Traction: return "Traction";
+  case BoundaryType::Pressure: return "Pressure";
+  case BoundaryType::Symmetry: return "Symmetry";
   case BoundaryType::Contact: return "Contact";
   case BoundaryType::Free: return "Free";
   }
@@ -115,17 +118,30 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
         pl->sublist(kTemplateSublist, false,
                     "One sublist per boundary part, named as the mesh names it (e.g. 'Top', "
                     "'Arc'). Parts not listed are traction-free.");
-    declareChoice(t, "Type", "Free", {"Displacement", "Traction", "Contact", "Free"},
-                  "Displacement: u = Value (natural in the stress formulation); Traction: σn = "
-                  "Value (essential); Contact: unilateral contact with the Contact/Obstacle; "
-                  "Free: σn = 0.");
+    declareChoice(t, "Type", "Free",
+                  {"Displacement", "Traction", "Pressure", "Symmetry", "Contact", "Free"},
+                  "Displacement: u = u_D (natural in the stress formulation); Traction: σn = t "
+                  "(essential); Pressure: σn = −p n, n the outward normal of the face (essential; "
+                  "n varies along curved faces); Symmetry: u·n = 0 and zero tangential traction "
+                  "(a symmetry plane or a roller), for a flat part normal to a coordinate axis "
+                  "(x_i = const); "
+                  "Contact: unilateral contact with the Contact/Obstacle; Free: σn = 0 "
+                  "(docs/theory.md §\"Loads and supports\").");
     declareRealArray(t, "Value", Teuchos::Array<double>(),
-                     "Displacement u_D or traction t: one number per space dimension. Empty "
-                     "means zero.",
-                     {0, 2, 3});
+                     "Constant data: u_D or t (one number per space dimension) or p (one "
+                     "number). Displacement, Traction and Pressure take exactly one of Value, "
+                     "Expression and Data = 'Exact solution'.",
+                     {0, 1, 2, 3});
+    declareExpressionArray(t, "Expression",
+                           "The data as formulas of x, y, z (one per component, like Value), "
+                           "evaluated at the quadrature points, e.g. {0, -0.01*x} or {1e3*(1 - "
+                           "y)}; no commas inside a formula (docs/user-guide.md \"Loads and "
+                           "supports\").",
+                           {0, 1, 2, 3});
     declareChoice(t, "Data", "Value", {"Value", "Exact solution"},
-                  "Where u_D or t comes from: the constant 'Value', or the exact solution named "
-                  "by 'Problem/Exact solution' (manufactured scenes).");
+                  "Where u_D or t comes from: 'Value' (the keys Value or Expression), or the "
+                  "exact solution named by 'Problem/Exact solution' (manufactured scenes; "
+                  "Displacement and Traction only).");
     return pl;
   }();
   return valid;
@@ -143,22 +159,54 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
     const std::string type = sub.get<std::string>("Type");
     bc.type = type == "Displacement" ? BoundaryType::Displacement
               : type == "Traction"   ? BoundaryType::Traction
+              : type == "Pressure"   ? BoundaryType::Pressure
+              : type == "Symmetry"   ? BoundaryType::Symmetry
               : type == "Contact"    ? BoundaryType::Contact
                                      : BoundaryType::Free;
     bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
     bc.fromExactSolution = sub.get<std::string>("Data") == "Exact solution";
-    if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction) {
-      if (bc.value.empty())
-        bc.value.assign(dimension, 0.0);
-      SC_THROW_IF(static_cast<int>(bc.value.size()) != dimension, InputError,
-                  "'Boundary Conditions/" << name << "/Value' has " << bc.value.size()
-                                          << " components, but Problem/Dimension is " << dimension
-                                          << ": give one value per dimension.");
+    const std::string key = "Boundary Conditions/" + name;
+    const auto& formulas = sub.get<Teuchos::Array<std::string>>("Expression");
+    bc.expression = compileExpressions(formulas, key + "/Expression");
+    const bool hasValue = !bc.value.empty(), hasExpression = !bc.expression.empty();
+    if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction ||
+        bc.type == BoundaryType::Pressure) {
+      const bool pressure = bc.type == BoundaryType::Pressure;
+      SC_THROW_IF(hasValue && hasExpression, InputError,
+                  "'" << key << "/Value' and '" << key << "/Expression' are both given; give one "
+                      << "of them (Value: constants, Expression: formulas of x, y, z).");
+      SC_THROW_IF(bc.fromExactSolution && pressure, InputError,
+                  "'" << key << "/Data' = 'Exact solution' is for Type Displacement or Traction; "
+                      << "Type Pressure takes 'Value' or 'Expression' (one number or formula).");
+      SC_THROW_IF(bc.fromExactSolution && (hasValue || hasExpression), InputError,
+                  "'" << key << "/Data' = 'Exact solution' takes the data from 'Problem/Exact "
+                      << "solution', but '" << key << "/" << (hasValue ? "Value" : "Expression")
+                      << "' is given too; remove one of them.");
+      SC_THROW_IF(!bc.fromExactSolution && !hasValue && !hasExpression, InputError,
+                  "'" << key << "' (Type " << type << ") has no data: give '" << key
+                      << "/Value' (constants, e.g. "
+                      << (pressure ? "{1}" : dimension == 2 ? "{0, 0}" : "{0, 0, 0}")
+                      << ") or '" << key << "/Expression' (formulas of x, y, z"
+                      << (pressure ? "" : ", one per component") << ").");
+      const std::size_t expected = pressure ? 1 : static_cast<std::size_t>(dimension);
+      const char* what = pressure ? "one value (the pressure p)" : "one value per dimension";
+      SC_THROW_IF(hasValue && bc.value.size() != expected, InputError,
+                  "'" << key << "/Value' has " << bc.value.size() << " components, but "
+                      << (pressure ? "Type Pressure takes one"
+                                   : "Problem/Dimension is " + std::to_string(dimension))
+                      << ": give " << what << ".");
+      SC_THROW_IF(hasExpression && bc.expression.size() != expected, InputError,
+                  "'" << key << "/Expression' has " << bc.expression.size() << " formulas, but "
+                      << (pressure ? "Type Pressure takes one"
+                                   : "Problem/Dimension is " + std::to_string(dimension))
+                      << ": give " << (pressure ? "one formula" : "one formula per dimension")
+                      << " (a formula cannot contain a comma: the array is split at commas).");
     } else {
-      SC_THROW_IF(!bc.value.empty(), InputError,
-                  "'Boundary Conditions/" << name << "/Value' is given, but Type '" << type
-                                          << "' takes no value; remove it or use Type "
-                                          << "Displacement or Traction.");
+      const char* given = hasValue ? "Value" : hasExpression ? "Expression" : "Data";
+      SC_THROW_IF(hasValue || hasExpression || bc.fromExactSolution, InputError,
+                  "'" << key << "/" << given << "' is given, but Type '" << type
+                      << "' takes no data; remove it or use Type Displacement, Traction or "
+                      << "Pressure.");
     }
     bcs.conditions.push_back(bc);
   }
@@ -197,15 +245,20 @@ void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>&
   for (const auto& name : meshBoundaries) {
     const auto it = std::find_if(conditions.begin(), conditions.end(),
                                  [&](const BoundaryCondition& c) { return c.boundary == name; });
-    if (it == conditions.end() || it->type != BoundaryType::Displacement)
-      return;  // a traction (given, zero or contact) part fixes the mean pressure
+    if (it == conditions.end() ||
+        (it->type != BoundaryType::Displacement && it->type != BoundaryType::Symmetry))
+      return;  // a traction (given, pressure, zero or contact) part fixes the mean pressure
   }
   SC_THROW_IF(true, InputError,
               "'Material/Poisson ratio' = 0.5 with a Displacement condition on every boundary part ("
-                  << joined(meshBoundaries) << "): the stress is then determined only up to a "
+                  << joined(meshBoundaries)
+                  << (boundariesOfType(BoundaryType::Symmetry).empty()
+                          ? ""
+                          : "; Symmetry parts count as such: c I n = c n is normal")
+                  << "): the stress is then determined only up to a "
                   << "constant pressure (the compliance of an incompressible material vanishes on "
                   << "the identity) and the discrete problem is singular. Give at least one part "
-                  << "a Traction, Free or Contact condition, or use a Poisson ratio below 0.5 "
+                  << "a Traction, Pressure, Free or Contact condition, or use a Poisson ratio below 0.5 "
                   << "(e.g. 0.4999).");
 }
 
@@ -221,6 +274,118 @@ void BoundaryConditions::checkBoundaryNames(const std::vector<std::string>& mesh
                                         << "'. Its boundary parts are: " << joined(meshBoundaries)
                                         << ".");
   }
+}
+
+namespace {
+// Component i of constant (value, empty = zero) or formula data at x.
+double component(const std::vector<double>& value, const std::vector<Expression>& expression, int i,
+                 const double* x, int dim)
+{
+  if (!expression.empty())
+    return expression[i](x, dim);
+  return value.empty() ? 0.0 : value[i];
+}
+
+bool constantZero(const std::vector<double>& value, const std::vector<Expression>& expression)
+{
+  return expression.empty() &&
+         std::all_of(value.begin(), value.end(), [](double v) { return v == 0.0; });
+}
+}  // namespace
+
+void BoundaryCondition::evaluate(const double* x, const double* n, int dim,
+                                 const ExactSolution* exact, double* out) const
+{
+  std::fill(out, out + dim, 0.0);
+  SC_THROW_IF(fromExactSolution && !exact, InputError,
+              "'Boundary Conditions/" << boundary << "/Data' = 'Exact solution', but "
+                                      << "'Problem/Exact solution' is 'None'.");
+  switch (type) {
+  case BoundaryType::Displacement:
+    if (fromExactSolution)
+      exact->displacement(x, out);
+    else
+      for (int i = 0; i < dim; ++i)
+        out[i] = component(value, expression, i, x, dim);
+    break;
+  case BoundaryType::Traction:
+    if (fromExactSolution)
+      exact->traction(x, n, out);
+    else
+      for (int i = 0; i < dim; ++i)
+        out[i] = component(value, expression, i, x, dim);
+    break;
+  case BoundaryType::Pressure: {
+    const double p = component(value, expression, 0, x, dim);
+    for (int i = 0; i < dim; ++i)
+      out[i] = -p * n[i];
+    break;
+  }
+  default:
+    break;
+  }
+}
+
+bool BoundaryCondition::isZero() const
+{
+  return !fromExactSolution && constantZero(value, expression);
+}
+
+// ----------------------------------------------------------------------------- Body force
+Teuchos::RCP<const Teuchos::ParameterList> BodyForce::getValidParameters()
+{
+  static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
+    auto pl = Teuchos::rcp(new Teuchos::ParameterList("Body Force"));
+    declareRealArray(*pl, "Value", Teuchos::Array<double>(),
+                     "Constant body force f (force per volume, one number per space dimension), "
+                     "e.g. gravity {0, -9.81e3} (ρ g with ρ = 1000, g = 9.81 in y); empty: "
+                     "f = 0. Give Value or Expression, not both.",
+                     {0, 2, 3});
+    declareExpressionArray(*pl, "Expression",
+                           "The body force as formulas of x, y, z, one per space dimension, "
+                           "e.g. {0, -9.81e3*(1 + 0.1*y)}; evaluated at the quadrature points.",
+                           {0, 2, 3});
+    return pl;
+  }();
+  return valid;
+}
+
+BodyForce BodyForce::fromParameters(const Teuchos::ParameterList& pl, const ProblemSettings& problem)
+{
+  BodyForce f;
+  const int dim = problem.dimension;
+  if (pl.isParameter("Value"))
+    f.value = toVector(pl.get<Teuchos::Array<double>>("Value"));
+  if (pl.isParameter("Expression"))
+    f.expression =
+        compileExpressions(pl.get<Teuchos::Array<std::string>>("Expression"), "Body Force/Expression");
+  SC_THROW_IF(!f.value.empty() && !f.expression.empty(), InputError,
+              "'Body Force/Value' and 'Body Force/Expression' are both given; give one of them "
+              "(Value: constants, Expression: formulas of x, y, z).");
+  SC_THROW_IF(!f.value.empty() && static_cast<int>(f.value.size()) != dim, InputError,
+              "'Body Force/Value' has " << f.value.size() << " components, but Problem/Dimension is "
+                                        << dim << ": give one value per dimension.");
+  SC_THROW_IF(!f.expression.empty() && static_cast<int>(f.expression.size()) != dim, InputError,
+              "'Body Force/Expression' has " << f.expression.size()
+                  << " formulas, but Problem/Dimension is " << dim
+                  << ": give one formula per dimension (a formula cannot contain a comma: the "
+                  << "array is split at commas).");
+  SC_THROW_IF((!f.value.empty() || !f.expression.empty()) && problem.exactSolution != "None",
+              InputError,
+              "'Body Force/" << (f.value.empty() ? "Expression" : "Value")
+                             << "' is given, but 'Problem/Exact solution' = '"
+                             << problem.exactSolution
+                             << "' defines the body force (f = −div σ of the exact solution); "
+                             << "remove the Body Force or set 'Problem/Exact solution' = 'None'.");
+  return f;
+}
+
+bool BodyForce::isZero() const { return constantZero(value, expression); }
+
+void BodyForce::evaluate(const double* x, int dim, double* f) const
+{
+  for (int i = 0; i < dim; ++i)
+    f[i] = component(value, expression, i, x, dim);
 }
 
 // ----------------------------------------------------------------------------- Method settings

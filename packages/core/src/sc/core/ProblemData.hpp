@@ -15,6 +15,8 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include "sc/core/Expression.hpp"
+
 namespace sc::core {
 
 struct ProblemSettings {
@@ -64,17 +66,31 @@ struct Material {
   static Material fromParameters(const Teuchos::ParameterList& materialList, int dimension = 2);
 };
 
-enum class BoundaryType { Displacement, Traction, Contact, Free };
+enum class BoundaryType { Displacement, Traction, Pressure, Symmetry, Contact, Free };
 std::string toString(BoundaryType type);
 
+class ExactSolution;
+
+/// One boundary part's condition (docs/theory.md §"The problem" and §"Loads and supports"). Its
+/// data is `value` (constants), `expression` (formulas of x, y, z) or the exact solution, one
+/// of the three: u_D (Displacement, d components), t (Traction, d) or the pressure p (Pressure,
+/// one). Symmetry (u·n = 0, zero tangential traction), Contact and Free take no data.
 struct BoundaryCondition {
   std::string boundary;       ///< name of the boundary part (mesh physical name)
   BoundaryType type = BoundaryType::Free;
-  std::vector<double> value;  ///< u_D (Displacement) or t (Traction), d components; empty otherwise
+  std::vector<double> value;  ///< constant data; empty (and no expression) means zero
   bool fromExactSolution = false;  ///< u_D or t from Problem/Exact solution instead of value
-};
+  std::vector<Expression> expression;  ///< formulas instead of value (one per component)
 
-/// "Boundary Conditions/<boundary name>/{Type, Value}". Boundary parts not named in the deck
+  /// The data at the boundary point x with the outward unit normal n (d components): u_D
+  /// (Displacement), t (Traction: the value, the formulas or σ(x)n of the exact solution) or
+  /// −p(x) n (Pressure); zero for the other types. `exact` is needed when fromExactSolution.
+  void evaluate(const double* x, const double* n, int dim, const ExactSolution* exact,
+                double* out) const;
+  /// True when the data is the constant zero (no formula, no exact solution).
+  bool isZero() const;
+};
+/// "Boundary Conditions/<boundary name>/{Type, Value, Expression, Data}". Boundary parts not named in the deck
 /// are traction-free.
 struct BoundaryConditions {
   std::vector<BoundaryCondition> conditions;
@@ -83,9 +99,10 @@ struct BoundaryConditions {
   std::vector<std::string> boundariesOfType(BoundaryType type) const;
   const BoundaryCondition* find(const std::string& boundary) const;
   /// Checks every named boundary exists in `meshBoundaries`; the error lists the valid names.
-  /// At ν = 0.5 the compliance annihilates the identity (A I = 0): with a Displacement condition
-  /// on every boundary part no traction fixes the mean pressure, σ_h + c I solves the discrete
-  /// problem for every c and the matrix is singular (a direct solver may still return a
+  /// At ν = 0.5 the compliance annihilates the identity (A I = 0; not in plane stress): with a
+  /// Displacement or Symmetry condition on every boundary part no traction fixes the mean
+  /// pressure (c I n = c n is normal, which a Symmetry part allows), σ_h + c I solves the
+  /// discrete problem for every c and the matrix is singular (a direct solver may still return a
   /// solution, with an arbitrary pressure). Throws InputError naming the keys in that case.
   void checkPressureDetermined(const std::vector<std::string>& meshBoundaries,
                                const Material& material) const;
@@ -94,6 +111,24 @@ struct BoundaryConditions {
 
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static BoundaryConditions fromParameters(const Teuchos::ParameterList& bcList, int dimension);
+};
+
+/// "Body Force/{Value, Expression}": the body force f in div σ + f = 0 (force per volume; e.g.
+/// gravity {0, −ρg}), constant or by formulas of x, y, z; zero when neither is given. With
+/// Problem/Exact solution f comes from the exact solution and this list must stay empty.
+struct BodyForce {
+  std::vector<double> value;           ///< d constants, or empty
+  std::vector<Expression> expression;  ///< d formulas, or empty
+
+  bool isZero() const;
+  /// f(x), d components.
+  void evaluate(const double* x, int dim, double* f) const;
+
+  static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
+  /// `problem` gives the dimension and the exact solution (a body force beside one is an
+  /// InputError: the exact solution defines f = −div σ).
+  static BodyForce fromParameters(const Teuchos::ParameterList& bodyForceList,
+                                  const ProblemSettings& problem);
 };
 
 struct DiscretizationSettings {

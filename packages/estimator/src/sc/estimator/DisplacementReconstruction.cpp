@@ -16,6 +16,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/ElementSolution.hpp>
+#include <sc/assembly/LoadsAndSupports.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -298,11 +299,13 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
       I.values_[l * d + i] = c[l];
   }
 
-  // Step 3: u^R = u_D at the nodes of Γ_D faces (all boundary faces are known on every rank,
-  // so a node is set whichever element of it this rank has).
+  // Step 3: u^R = u_D at the nodes of Γ_D faces, and u^R_a = 0 at the nodes of Symmetry faces
+  // in x_a = const (all boundary faces are known on every rank, so a node is set whichever
+  // element of it this rank has).
+  const auto symmetryAxis = assembly::symmetryAxes(m, data.boundaryConditions);
   for (int f : m.boundaryFaces()) {
     const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
-    if (!bc || bc->type != core::BoundaryType::Displacement)
+    if (!bc || (bc->type != core::BoundaryType::Displacement && bc->type != core::BoundaryType::Symmetry))
       continue;
     const int e = m.faceElements(f)[0];
     const int* faces = m.elementFaces(e);
@@ -315,11 +318,13 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
       const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * n + a]];
       if (l < 0)
         continue;
+      if (bc->type == core::BoundaryType::Symmetry) {
+        I.values_[l * d + symmetryAxis.at(bc->boundary)] = 0.0;
+        continue;
+      }
       double uD[3] = {0, 0, 0};
-      if (bc->fromExactSolution)
-        data.exactSolution->displacement(&I.coords[3 * l], uD);
-      else
-        std::copy(bc->value.begin(), bc->value.end(), uD);
+      const double unusedNormal[3] = {0, 0, 0};  // u_D does not depend on the normal
+      bc->evaluate(&I.coords[3 * l], unusedNormal, d, data.exactSolution, uD);
       for (int i = 0; i < d; ++i)
         I.values_[l * d + i] = uD[i];
     }

@@ -112,10 +112,10 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
         as[t.comp] += t.sign * v.sigma[t.row * d + t.col];
       for (int r = 0; r < S.numRotationComponents(); ++r)
         asym += w * as[r] * as[r] / twoMu;
-      if (exact) {
+      if (data.hasBodyForce()) {
         // div σ_h = −Π_k f, so f + div σ_h = f − Π_k f.
         double f[3];
-        exact->bodyForce(ev.point(q), f);
+        data.bodyForceAt(ev.point(q), d, f);
         for (int i = 0; i < d; ++i)
           osc += w * std::pow(hT / M_PI, 2) * std::pow(f[i] + v.divSigma[i], 2) / twoMu;
       }
@@ -126,31 +126,26 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
       if (!m.isBoundaryFace(f))
         continue;
       const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
-      if (!bc || bc->type == core::BoundaryType::Contact)
-        continue;  // free faces: σ_h n = 0 exactly; contact faces: the contact contribution
-      const bool constantZero = !bc->fromExactSolution &&
-                                std::all_of(bc->value.begin(), bc->value.end(), [](double x) { return x == 0.0; });
-      if (bc->type == core::BoundaryType::Traction && constantZero)
+      // Free faces: σ_h n = 0 exactly; contact faces: the contact contribution; Symmetry faces:
+      // the tangential rows are zero exactly and u^R·n = 0 at the face's nodes, hence on the
+      // (flat) face: nothing to measure.
+      if (!bc || bc->type == core::BoundaryType::Contact || bc->type == core::BoundaryType::Symmetry)
+        continue;
+      if ((bc->type == core::BoundaryType::Traction || bc->type == core::BoundaryType::Pressure) &&
+          bc->isZero())
         continue;
       const double hF = d == 2 ? m.faceMeasure(f) : std::sqrt(m.faceMeasure(f));
       fv.reinit(e, lf);
       for (int q = 0; q < fv.numPoints(); ++q) {
         const double* x = fv.point(q);
         double value[3] = {0, 0, 0};
+        bc->evaluate(x, fv.normal(q).data(), d, exact, value);
         if (bc->type == core::BoundaryType::Displacement) {
-          if (bc->fromExactSolution)
-            exact->displacement(x, value);
-          else
-            std::copy(bc->value.begin(), bc->value.end(), value);
           double u[3];
           rec.valueAt(e, x, u);
           for (int i = 0; i < d; ++i)
             osc += fv.weight(q) * twoMu / hF * std::pow(value[i] - u[i], 2);
         } else {
-          if (bc->fromExactSolution)
-            exact->traction(x, fv.normal(q).data(), value);
-          else
-            std::copy(bc->value.begin(), bc->value.end(), value);
           double sigma[9];
           sol.stress(fv, q, sigma);
           for (int i = 0; i < d; ++i) {
