@@ -13,13 +13,28 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
   using namespace sc::core;
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Contact"));
-    declareChoice(*pl, "Obstacle", "Plane", {"Plane"}, "Shape of the rigid foundation.");
+    declareChoice(*pl, "Obstacle", "Plane", {"Plane", "Circle", "Sphere", "Cylinder"},
+                  "Shape of the rigid obstacle: a Plane (the foundation), or a rigid indenter: "
+                  "Circle (2D: a cylinder in plane strain/stress), Sphere (3D) or Cylinder (3D, "
+                  "with Obstacle axis), given by Obstacle center and Obstacle radius; the body "
+                  "lies outside it (docs/contact.md 'Indenters').");
     declareRealArray(*pl, "Obstacle point", Teuchos::tuple<double>(0.0, 0.0),
                      "A point of the obstacle plane (d components).", {2, 3});
     declareRealArray(*pl, "Obstacle normal", Teuchos::tuple<double>(0.0, 1.0),
-                     "Normal of the obstacle plane pointing towards the body (d components, "
-                     "normalised on input). A normal pointing away from the body is an error.",
+                     "Plane: its normal pointing towards the body (d components, normalised on "
+                     "input; a normal pointing away from the body is an error). Indenters: the "
+                     "direction in which the indenter presses into the body, the axis along "
+                     "which the contact summary reports the load and across which it measures "
+                     "the contact half-width.",
                      {2, 3});
+    declareRealArray(*pl, "Obstacle center", Teuchos::Array<double>(),
+                     "Indenters: centre of the Circle/Sphere, a point of the Cylinder's axis "
+                     "(d components; required for them).",
+                     {0, 2, 3});
+    declareReal(*pl, "Obstacle radius", 1.0, "Indenters: radius (> 0).", 0.0, true);
+    declareRealArray(*pl, "Obstacle axis", Teuchos::Array<double>(),
+                     "Cylinder (3D): direction of its axis (3 components, normalised on input).",
+                     {0, 3});
     declareChoice(*pl, "Frame", "Obstacle normal", {"Obstacle normal", "Body normal"},
                   "Contact frame of each contact point (docs/contact.md, 'Contact model'): "
                   "'Obstacle normal' measures the gap, the contact pressure and the slip along "
@@ -49,6 +64,8 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
   c.obstaclePoint = toVector(pl.get<Teuchos::Array<double>>("Obstacle point"));
   c.obstacleNormal = toVector(pl.get<Teuchos::Array<double>>("Obstacle normal"));
   for (const char* key : {"Obstacle point", "Obstacle normal"}) {
+    if (std::string(key) == "Obstacle point" && c.obstacle != "Plane")
+      continue;  // an indenter has a centre instead
     const auto& v = std::string(key) == "Obstacle point" ? c.obstaclePoint : c.obstacleNormal;
     SC_THROW_IF(static_cast<int>(v.size()) != dimension, core::InputError,
                 "'Contact/" << key << "' has " << v.size()
@@ -61,6 +78,28 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
   SC_THROW_IF(norm == 0.0, core::InputError, "'Contact/Obstacle normal' is the zero vector.");
   for (double& x : c.obstacleNormal)
     x /= norm;
+  c.obstacleCenter = toVector(pl.get<Teuchos::Array<double>>("Obstacle center"));
+  c.obstacleRadius = pl.get<double>("Obstacle radius");
+  c.obstacleAxis = toVector(pl.get<Teuchos::Array<double>>("Obstacle axis"));
+  if (c.obstacle != "Plane") {
+    const bool needs3D = c.obstacle != "Circle";
+    SC_THROW_IF(needs3D != (dimension == 3), core::InputError,
+                "'Contact/Obstacle' = '" << c.obstacle << "' is a " << (needs3D ? "3D" : "2D")
+                    << " indenter, but Problem/Dimension is " << dimension << "; valid: "
+                    << (dimension == 2 ? "'Plane', 'Circle'" : "'Plane', 'Sphere', 'Cylinder'") << ".");
+    SC_THROW_IF(static_cast<int>(c.obstacleCenter.size()) != dimension, core::InputError,
+                "'Contact/Obstacle' = '" << c.obstacle << "' needs 'Contact/Obstacle center' with "
+                    << dimension << " components (got " << c.obstacleCenter.size() << ").");
+    if (c.obstacle == "Cylinder") {
+      double a = 0.0;
+      for (double x : c.obstacleAxis) a += x * x;
+      a = std::sqrt(a);
+      SC_THROW_IF(c.obstacleAxis.size() != 3 || !(a > 0.0), core::InputError,
+                  "'Contact/Obstacle' = 'Cylinder' needs 'Contact/Obstacle axis', a non-zero "
+                  "vector of 3 components (got " << c.obstacleAxis.size() << " components).");
+      for (double& x : c.obstacleAxis) x /= a;
+    }
+  }
   c.frame = pl.get<std::string>("Frame") == "Body normal" ? ContactFrame::BodyNormal
                                                           : ContactFrame::ObstacleNormal;
   const std::string law = pl.get<std::string>("Friction law");

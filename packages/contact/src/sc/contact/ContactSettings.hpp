@@ -20,9 +20,14 @@ enum class ContactFrame { ObstacleNormal, BodyNormal };
 
 /// "Contact": the rigid obstacle and the friction law (docs/theory.md §"Contact and friction").
 struct ContactSettings {
-  std::string obstacle = "Plane";
+  std::string obstacle = "Plane";       ///< Plane, Circle (2D), Sphere (3D) or Cylinder (3D)
   std::vector<double> obstaclePoint;   ///< a point of the plane
-  std::vector<double> obstacleNormal;  ///< unit normal of the plane, pointing into the body
+  /// Plane: its unit normal, pointing into the body. Indenters: the unit direction in which the
+  /// indenter presses into the body (the contact summary's load axis).
+  std::vector<double> obstacleNormal;
+  std::vector<double> obstacleCenter;  ///< indenters: centre of the circle/sphere, a point of the axis
+  double obstacleRadius = 1.0;         ///< indenters: radius
+  std::vector<double> obstacleAxis;    ///< Cylinder: unit axis direction
   ContactFrame frame = ContactFrame::ObstacleNormal;
   FrictionLaw frictionLaw = FrictionLaw::None;
   double frictionCoefficient = 0.0;

@@ -46,11 +46,97 @@ std::array<double, 3> PlaneObstacle::contactNormal(const double* /*x*/) const
   return {-normal_[0], -normal_[1], -normal_[2]};
 }
 
+IndenterObstacle::IndenterObstacle(int dim, const std::vector<double>& center, double radius,
+                                   const std::vector<double>& axis,
+                                   const std::vector<double>& loadDirection)
+  : dim_(dim), radius_(radius), cylinder_(!axis.empty())
+{
+  SC_THROW_IF(!(radius > 0.0) || !std::isfinite(radius), core::InputError,
+              "'Contact/Obstacle radius' = " << radius << " must be a positive number.");
+  for (int i = 0; i < dim; ++i) {
+    center_[i] = center.at(i);
+    load_[i] = loadDirection.at(i);
+    if (cylinder_)
+      axis_[i] = axis.at(i);
+  }
+}
+
+std::array<double, 3> IndenterObstacle::across(const double* v) const
+{
+  std::array<double, 3> r{0, 0, 0};
+  for (int i = 0; i < dim_; ++i)
+    r[i] = v[i];
+  if (cylinder_) {
+    double along = 0.0;
+    for (int i = 0; i < dim_; ++i)
+      along += r[i] * axis_[i];
+    for (int i = 0; i < dim_; ++i)
+      r[i] -= along * axis_[i];
+  }
+  return r;
+}
+
+double IndenterObstacle::height(const double* x) const
+{
+  double rel[3] = {0, 0, 0};
+  for (int i = 0; i < dim_; ++i)
+    rel[i] = x[i] - center_[i];
+  const auto r = across(rel);
+  return std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) - radius_;
+}
+
+std::array<double, 3> IndenterObstacle::contactNormal(const double* x) const
+{
+  double rel[3] = {0, 0, 0};
+  for (int i = 0; i < dim_; ++i)
+    rel[i] = x[i] - center_[i];
+  const auto r = across(rel);
+  const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  if (!(len > 1e-12 * radius_))  // on the axis/centre: the loading direction decides
+    return {load_[0], load_[1], load_[2]};
+  return {-r[0] / len, -r[1] / len, -r[2] / len};
+}
+
+double IndenterObstacle::gap(const double* x, const double* n, double cap) const
+{
+  // |r + s m| = R with r = across(x − c), m = across(n): A s² + 2 b s + c0 = 0.
+  double rel[3] = {0, 0, 0};
+  for (int i = 0; i < dim_; ++i)
+    rel[i] = x[i] - center_[i];
+  const auto r = across(rel);
+  const auto m = across(n);
+  double A = 0.0, b = 0.0, c0 = -radius_ * radius_;
+  for (int i = 0; i < 3; ++i) {
+    A += m[i] * m[i];
+    b += r[i] * m[i];
+    c0 += r[i] * r[i];
+  }
+  if (c0 > 0.0 && b >= 0.0)  // outside, and moving away from (or along) the surface
+    return cap;
+  if (!(A > 1e-24))  // along the cylinder's axis
+    return cap;
+  const double disc = b * b - A * c0;
+  if (disc < 0.0)  // the ray passes beside the indenter
+    return cap;
+  // The first crossing from outside (s ≥ 0), or, for a point already inside (an overlap), the
+  // way back out (s < 0).
+  const double s = (-b - std::sqrt(disc)) / A;
+  return std::min(s, cap);
+}
+
 std::unique_ptr<Obstacle> createObstacle(const ContactSettings& settings, int dim)
 {
-  SC_THROW_IF(settings.obstacle != "Plane", core::InputError,
-              "'Contact/Obstacle' = '" << settings.obstacle << "': valid obstacles: 'Plane'.");
-  return std::make_unique<PlaneObstacle>(dim, settings.obstaclePoint, settings.obstacleNormal);
+  if (settings.obstacle == "Plane")
+    return std::make_unique<PlaneObstacle>(dim, settings.obstaclePoint, settings.obstacleNormal);
+  SC_THROW_IF(settings.obstacle != "Circle" && settings.obstacle != "Sphere" &&
+                  settings.obstacle != "Cylinder",
+              core::InputError,
+              "'Contact/Obstacle' = '" << settings.obstacle
+                                       << "': valid obstacles: 'Plane', 'Circle', 'Sphere', 'Cylinder'.");
+  return std::make_unique<IndenterObstacle>(
+      dim, settings.obstacleCenter, settings.obstacleRadius,
+      settings.obstacle == "Cylinder" ? settings.obstacleAxis : std::vector<double>(),
+      settings.obstacleNormal);
 }
 
 double missCap(const mesh::SimplexMesh& m)
@@ -100,6 +186,26 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
       contactLo = std::min(contactLo, obstacle->height(m.vertex(m.faceVertices(f)[i])));
   }
   const double mean = sum / std::max(1, m.numVertices());
+  if (settings.obstacle != "Plane") {
+    // An indenter: the body must lie outside it, and the contact boundary may overlap it by at
+    // most the fraction of the body's extent that a plane may (measured radially).
+    std::ostringstream where;
+    where << "the indenter ('Contact/Obstacle' = '" << settings.obstacle << "', 'Contact/Obstacle "
+          << "center' = " << vec(settings.obstacleCenter) << ", 'Contact/Obstacle radius' = "
+          << settings.obstacleRadius << ")";
+    SC_THROW_IF(mean <= 0.0, core::InputError,
+                where.str() << " holds most of the body (mean distance from its surface " << mean
+                            << "): the body must lie outside the indenter, which touches its "
+                               "contact boundary.");
+    const double overlap = std::max(0.0, -contactLo), extent = hi - lo;
+    SC_THROW_IF(overlap > kMaxInitialOverlap * extent, core::InputError,
+                "the contact boundary starts " << overlap << " deep inside " << where.str()
+                    << ", more than " << kMaxInitialOverlap << " of the body's extent " << extent
+                    << " measured from the indenter; the small-strain contact model does not "
+                       "apply. Move the indenter out of the body (an overlap up to that fraction "
+                       "is solved as a prescribed indentation).");
+    return;
+  }
   // The body mostly behind the plane but partly in front, well beyond the overlap allowed: a
   // plane through the body, which the opposite normal would not mend either.
   const double reach = kMaxInitialOverlap * (hi - lo);

@@ -44,6 +44,29 @@ private:
   std::array<double, 3> point_{}, normal_{};
 };
 
+/// A rigid indenter (docs/contact.md "Indenters"): the disc/ball of radius R around `center`
+/// (Circle in 2D, Sphere in 3D), or, with a unit `axis`, the infinite cylinder of radius R around
+/// the line through `center` along `axis` (3D). The body lies outside it. At a point x of the
+/// body, with r the part of x − center across the axis (all of it for a ball): height |r| − R,
+/// contact normal −r/|r| (towards the indenter's axis/centre, the normal of its surface at the
+/// closest point), and the gap along a unit vector n the distance to the surface along the ray
+/// x + s n (negative behind the surface; the miss cap for a ray that misses or leaves it).
+class IndenterObstacle : public Obstacle {
+public:
+  IndenterObstacle(int dim, const std::vector<double>& center, double radius,
+                   const std::vector<double>& axis, const std::vector<double>& loadDirection);
+  double gap(const double* x, const double* n, double cap) const override;
+  std::array<double, 3> contactNormal(const double* x) const override;
+  double height(const double* x) const override;
+
+private:
+  int dim_;
+  std::array<double, 3> center_{}, axis_{}, load_{};
+  double radius_;
+  bool cylinder_;
+  std::array<double, 3> across(const double* v) const;  ///< v without its component along the axis
+};
+
 std::unique_ptr<Obstacle> createObstacle(const ContactSettings& settings, int dim);
 
 /// The gap given to rays that miss the obstacle: 10 × the mesh's bounding-box diagonal (finite,
