@@ -66,6 +66,16 @@ CommandLine parseCommandLine(int argc, char* argv[])
       SC_THROW_IF(i + 1 >= argc, sc::core::InputError, flag << " needs a value. " << kUsage);
       return argv[++i];
     };
+    // An empty directory (`--output "$DIR"` with DIR unset) is a scripting error: read as "not
+    // given", the run would write into the deck's Output/Directory, or --restart would start a
+    // fresh run, without a word.
+    auto directory = [&](const std::string& flag, const char* withoutIt) -> std::string {
+      std::string d = value(flag);
+      SC_THROW_IF(d.empty(), sc::core::InputError,
+                  flag << " '' is an empty directory name: give a directory (e.g. " << flag
+                       << " out), or omit " << flag << " " << withoutIt << ".");
+      return d;
+    };
     if (a == "--help" || a == "-h")
       cl.help = true;  // handled in main, before Kokkos is initialised
     else if (a == "--version")
@@ -77,11 +87,11 @@ CommandLine parseCommandLine(int argc, char* argv[])
     else if (a == "--quiet")
       cl.quiet = true;
     else if (a == "--output")
-      cl.output = value(a);
+      cl.output = directory(a, "to use the deck's Output/Directory");
     else if (a == "--set")
       cl.overrides.push_back(value(a));
     else if (a == "--restart")
-      cl.restart = value(a);
+      cl.restart = directory(a, "for a new run");
     else if (a.rfind("--", 0) == 0)
       SC_THROW_IF(true, sc::core::InputError,
                   "unknown option '" << a << "'. Valid options: --output, --set, --restart, "
