@@ -37,6 +37,7 @@ struct LevelResult {
 
 struct VerificationSetup {
   std::string source = "Unit square";
+  std::string file;  ///< Mesh/File, for source = "Gmsh file" or "Gmsh geometry"
   int dim = 2;
   double meshSize = 0.5;
   int levels = 1;
@@ -94,6 +95,8 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
 {
   Teuchos::ParameterList meshList;
   meshList.set("Source", s.source);
+  if (!s.file.empty())
+    meshList.set("File", s.file);
   meshList.set("Initial mesh size", s.meshSize);
   meshList.set("Uniform refinements", s.initialRefinements);
   auto refiner = mesh::MeshFactory::build(meshList, s.dim);

@@ -128,8 +128,12 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
       const double bulge = norm(offset);
       inflate[f] += bulge;
       if (bulge > 1e-10 * length) {
-        partCurved_[part_[f]] = 1;
         quadratic_ = true;
+        // 2D: a bent face. 3D: only a patch that leaves its plane makes the part curved; a flat
+        // part whose edges bend within its plane (a disc bounded by a circle) is not, so that the
+        // edges it shares with a curved part are projected onto that part (the flat patches
+        // would leave a point on a chord where it is).
+        if (dim_ == 2) partCurved_[part_[f]] = 1;
       }
       // The map t -> X(t) along the edge is invertible iff its derivative keeps the chord's
       // direction at both ends: the midpoint node's position along the chord in (1/4, 3/4).
@@ -141,8 +145,11 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
                           << "with Gmsh's high-order optimisation).");
     }
     if (dim_ == 3) {
-      // The patch normal at the vertices and midpoints must keep the flat triangle's side.
       const Point n0 = cross(sub(node(f, 1), node(f, 0)), sub(node(f, 2), node(f, 0)));
+      for (int i = 3; i < 6; ++i)
+        if (std::abs(dot(sub(node(f, i), node(f, 0)), n0)) > 1e-10 * norm(n0) * size)
+          partCurved_[part_[f]] = 1;
+      // The patch normal at the vertices and midpoints must keep the flat triangle's side.
       const double pts[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
       for (const auto& q : pts) {
         double N[6], Nr[6], Ns[6];

@@ -105,6 +105,31 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, QuadraticFileRefinesOntoItsQuadraticArcs)
   TEST_COMPARE(worst, <=, std::pow(theta0, 4) / 500);
 }
 
+// 3D: a second-order .msh of the half ball (10-node tetrahedra, 6-node triangle faces on the
+// sphere): new vertices on the cap lie on the quadratic patches, far closer to the sphere than the
+// chords' midpoints (θ²/8 for an edge of arc angle θ); the patches' own distance from the sphere
+// is of order θ⁴ (bounded here by θ⁴/100, measured below).
+TEUCHOS_UNIT_TEST(CurvedBoundary, QuadraticTetrahedraFileRefinesOntoItsPatches)
+{
+  const std::string file = std::filesystem::absolute("half_ball_order2.msh").string();
+  GmshMeshIO::writeGeometryMesh(HalfBallGeometry(1.0), 0.5, file, 4.1, 2);
+  const auto read = GmshMeshIO::readMeshFile(file, 3);
+  TEST_ASSERT(read.boundary->quadratic());
+  TEST_ASSERT(read.boundary->isCurved("Cap"));
+  // The flat top is not curved, though its rim edges are (within its plane): the rim's new
+  // vertices are placed on the cap's patches.
+  TEST_ASSERT(!read.boundary->isCurved("Top"));
+  const double theta0 = circleFit(*read.mesh, "Cap", {0, 0, 1}, 1.0).maxAngle;
+  auto refiner = MeshFactory::build(meshList("Gmsh file", file), 3);
+  refiner->refineUniformly();
+  const auto fit = circleFit(*refiner->mesh(), "Cap", {0, 0, 1}, 1.0);
+  out << "initial edge angle " << theta0 << ", radial error after 1 level " << fit.radialError
+      << " (chord midpoints: θ²/8 = " << theta0 * theta0 / 8 << ", bound θ⁴/100 = "
+      << std::pow(theta0, 4) / 100 << ")\n";
+  TEST_COMPARE(fit.radialError, <=, std::pow(theta0, 4) / 100);
+  TEST_COMPARE(fit.radialError, <, 0.1 * theta0 * theta0 / 8);
+}
+
 // The stored linear file of the half disc: the arc is a polygon of n chords, neighbouring chords
 // meet at 180/n degrees; the geometry says so (warning) and keeps the polygon.
 TEUCHOS_UNIT_TEST(CurvedBoundary, LinearFileWarnsThatItsBodyIsThePolygon)

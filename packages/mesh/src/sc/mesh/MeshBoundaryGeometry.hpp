@@ -37,8 +37,10 @@ public:
   int dim() const override { return dim_; }
   std::string sceneName() const override { return "Gmsh file"; }
   std::vector<std::string> boundaryNames() const override { return names_; }
-  /// True if a face of the part bends (a midpoint node off its chord midpoint by more than
-  /// 1e-10 of the face's size).
+  /// True if a face of the part bends: in 2D a midpoint node off its chord midpoint, in 3D a
+  /// midpoint node off the plane of its face's vertices (by more than 1e-10 of the face's size).
+  /// A flat part whose edges bend within its plane is not curved: its bent edges are another
+  /// part's too, whose patches place their new vertices.
   bool isCurved(const std::string& boundaryName) const override;
   /// Closest point of the part's faces (their quadratic patches); x itself for a part that is
   /// not curved or unknown.
