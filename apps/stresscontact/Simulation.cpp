@@ -16,6 +16,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <sc/adapt/AdaptiveLoop.hpp>
+#include <sc/assembly/BodySupports.hpp>
 #include <sc/assembly/LoadsAndSupports.hpp>
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/assembly/MixedElasticitySystem.hpp>
@@ -194,6 +195,7 @@ void Simulation::setupMesh()
                                          params_->sublist("Mesh").get<std::string>("Source"));
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
   assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_});
+  assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
   if (boundaryConditions_.hasContact())
     contact::checkObstacle(*mesh_, contact_,
                            boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
