@@ -1,6 +1,7 @@
 #include "DeckParameters.hpp"
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include <sc/adapt/AdaptivitySettings.hpp>
@@ -91,6 +92,15 @@ Teuchos::RCP<Teuchos::ParameterList> readAndValidateDeck(const std::string& path
   {
     Teuchos::ParameterList copy = *params;
     core::validateParameters(copy, *valid, "'" + path + "'");
+  }
+  // A mesh or geometry file named in the deck by a relative path is the deck's neighbour: it is
+  // resolved against the deck's directory, so that the deck runs from any working directory. A
+  // path given by --set is a shell path, relative to the working directory (docs/user-guide.md).
+  if (params->isSublist("Mesh") && params->sublist("Mesh").isType<std::string>("File")) {
+    const std::filesystem::path file = params->sublist("Mesh").get<std::string>("File");
+    if (!file.empty() && file.is_relative())
+      params->sublist("Mesh").set(
+          "File", (std::filesystem::path(path).parent_path() / file).lexically_normal().string());
   }
   for (const auto& o : overrides)
     core::applyOverride(*params, *valid, o);

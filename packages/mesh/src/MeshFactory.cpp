@@ -71,8 +71,9 @@ Teuchos::RCP<const Teuchos::ParameterList> MeshFactory::getValidParameters()
                           1e-5, false);
     sc::core::declareString(*p, "File", "",
                             "Source = Gmsh file: a .msh file (format 2.2 or 4.1), read as data. "
-                            "Source = Gmsh geometry: a .geo script, run by Gmsh. Relative paths "
-                            "are taken from the working directory");
+                            "Source = Gmsh geometry: a .geo script, run by Gmsh. A relative path "
+                            "in a deck is taken from the deck's directory, one given by --set from "
+                            "the working directory");
     sc::core::declareRealArray(*p, "Lower corner", Teuchos::Array<double>(2, 0.0),
                                "Lower-left corner of the Rectangle", {2});
     sc::core::declareRealArray(*p, "Upper corner", Teuchos::Array<double>(2, 1.0),
