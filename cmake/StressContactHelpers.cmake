@@ -1,8 +1,13 @@
 # Helpers shared by all StressContact packages, apps and tests.
 #
-#   sc_add_package(<name> SOURCES ... [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
+#   sc_add_package(<name> [INCLUDE_NAME <dir>] DEPENDS <package> ... SOURCES ...
+#                  [PUBLIC_LIBS ...] [PRIVATE_LIBS ...])
 #     Library target sc_<name> (alias StressContact::<name>, exported as StressContact::<name>),
-#     headers under packages/<name>/src/sc/<name>/ included as <sc/<name>/X.hpp>.
+#     headers under packages/<name>/src/sc/<dir>/ (dir = INCLUDE_NAME, default <name>) included as
+#     <sc/<dir>/X.hpp>. DEPENDS declares the package's upstream StressContact packages (TriBITS'
+#     LIB_REQUIRED_PACKAGES): each must be added before it, every sc_* library it links must be
+#     declared there, and the test package_includes_declared checks that its sources include
+#     only headers of itself and of its declared packages and their upstream packages.
 #
 #   sc_add_test(<name> SOURCES ... | COMMAND ...  [LIBS ...] [MPI_RANKS 1 2 4] [ARGS ...]
 #               [WILL_FAIL] [PASS_REGULAR_EXPRESSION re] [LABELS ...] [TIMEOUT s])
@@ -27,11 +32,22 @@ if(_sc_uid STREQUAL "0")
 endif()
 
 function(sc_add_package name)
-  cmake_parse_arguments(P "" "" "SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
+  cmake_parse_arguments(P "" "INCLUDE_NAME" "DEPENDS;SOURCES;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
   set(tgt sc_${name})
-  # The package order (docs/architecture.md) is enforced here: CMake itself lets a target link one
-  # defined later, so a package may link only the StressContact packages added before it.
+  if(NOT P_INCLUDE_NAME)
+    set(P_INCLUDE_NAME ${name})
+  endif()
+  # The package graph (docs/architecture.md) is enforced here: CMake itself lets a target link one
+  # defined later, and any target it likes. A package declares its upstream packages (DEPENDS),
+  # which must be added before it; it may link only those.
   get_property(defined GLOBAL PROPERTY SC_PACKAGES)
+  foreach(dep IN LISTS P_DEPENDS)
+    if(NOT dep IN_LIST defined)
+      message(FATAL_ERROR "package '${name}' depends on '${dep}', which is not defined before it. A "
+                          "package may use only the packages added before it in "
+                          "packages/CMakeLists.txt (docs/architecture.md); defined so far: ${defined}")
+    endif()
+  endforeach()
   foreach(lib IN LISTS P_PUBLIC_LIBS P_PRIVATE_LIBS)
     if(lib MATCHES "^sc_(.+)$")
       set(dep ${CMAKE_MATCH_1})
@@ -40,8 +56,23 @@ function(sc_add_package name)
                             "package may use only the packages added before it in "
                             "packages/CMakeLists.txt (docs/architecture.md); defined so far: ${defined}")
       endif()
+      if(NOT dep IN_LIST P_DEPENDS)
+        message(FATAL_ERROR "package '${name}' links '${lib}', but does not declare '${dep}' in its "
+                            "DEPENDS (${P_DEPENDS}): declare it, or do not link it "
+                            "(docs/architecture.md \"Packages and their order\")")
+      endif()
     endif()
   endforeach()
+  # The upstream closure, for the include check: the declared packages and theirs.
+  set(closure ${P_DEPENDS})
+  foreach(dep IN LISTS P_DEPENDS)
+    get_property(up GLOBAL PROPERTY SC_PACKAGE_CLOSURE_${dep})
+    list(APPEND closure ${up})
+  endforeach()
+  list(REMOVE_DUPLICATES closure)
+  set_property(GLOBAL PROPERTY SC_PACKAGE_CLOSURE_${name} ${closure})
+  set_property(GLOBAL PROPERTY SC_PACKAGE_INCLUDE_NAME_${name} ${P_INCLUDE_NAME})
+  set_property(GLOBAL APPEND PROPERTY SC_PACKAGE_SOURCE_DIRS "${name}=${CMAKE_CURRENT_SOURCE_DIR}/src")
   add_library(${tgt} ${P_SOURCES})
   add_library(StressContact::${name} ALIAS ${tgt})
   set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME stresscontact_${name}
