@@ -161,21 +161,40 @@ private:
 
 }  // namespace
 
+// The rank of this process as the MPI launcher announces it (Open MPI, MPICH/Hydra, Slurm), 0
+// when started without one: lets the commands that need no MPI answer once, before MPI_Init.
+int launcherRank()
+{
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID"})
+    if (const char* v = std::getenv(name))
+      return std::atoi(v);
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
+  // --help, --version and --print-parameters need neither MPI nor Kokkos: they answer before
+  // either starts (MPI's start-up alone took 0.36 s of the 0.7 s that `--help` took).
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h" || a == "--version" || a == "--print-parameters") {
+      if (launcherRank() != 0)
+        return 0;
+      if (a == "--version")
+        std::cout << "stresscontact " << sc::app::versionString() << std::endl;
+      else if (a == "--print-parameters")
+        sc::app::printValidParameters(std::cout);
+      else
+        std::cout << kUsage;
+      return 0;
+    }
+  }
   // Before MPI_Init: keeps Open MPI from an MPI-IO component that overflows a buffer on paths
   // over 244 characters (sc/io/MpiIoEnvironment.hpp).
   sc::io::leaveOutOverflowingMpiIoComponents();
   Teuchos::GlobalMPISession mpiSession(&argc, &argv, nullptr);
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int rank = comm->getRank();
-  // Our help before Kokkos' initialisation, which would print Kokkos' help first.
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      if (rank == 0)
-        std::cout << kUsage;
-      return 0;
-    }
   Kokkos::ScopeGuard kokkos(argc, argv);
   sc::core::enableFloatingPointTrapsFromEnvironment();  // SC_TRAP_FPE=1: set by CTest
   ErrorAgreement errors;
