@@ -187,19 +187,32 @@ struct LocalSelection {
   }
 };
 
+// The "Local refinement" sublist checked against its declaration, with its declared defaults: the
+// one place its keys get values (no second defaults in the code that reads them).
+Teuchos::ParameterList validatedLocal(const Teuchos::ParameterList& list)
+{
+  Teuchos::ParameterList user, valid;
+  user.sublist("Mesh").sublist("Local refinement") = list;
+  user.sublist("Mesh").sublist("Local refinement").setName("Local refinement");
+  valid.sublist("Mesh").set("Local refinement",
+                            MeshFactory::getValidParameters()->sublist("Local refinement"));
+  sc::core::validateParameters(user, valid, "Mesh parameters");
+  return user.sublist("Mesh").sublist("Local refinement");
+}
+
 LocalSelection localSelection(const SimplexMesh& mesh, const Teuchos::ParameterList& list)
 {
-  Teuchos::ParameterList local(list);  // get() with defaults: missing keys mean the defaults
-  const int levels = local.get<int>("Levels", 0);
+  const Teuchos::ParameterList local = validatedLocal(list);
+  const int levels = local.get<int>("Levels");
   LocalSelection s;
   s.d = mesh.dim();
-  s.center = local.get<Teuchos::Array<double>>("Center", Teuchos::Array<double>());
+  s.center = local.get<Teuchos::Array<double>>("Center");
   SC_THROW_IF(static_cast<int>(s.center.size()) != s.d, sc::core::InputError,
               "'Mesh/Local refinement/Center' needs " << s.d << " values (the problem dimension) "
               "when 'Mesh/Local refinement/Levels' = " << levels << " > 0; got "
               << s.center.size() << ".");
-  s.radius = local.get<double>("Radius", 0.25);
-  const std::string boundary = local.get<std::string>("Boundary", "");
+  s.radius = local.get<double>("Radius");
+  const std::string boundary = local.get<std::string>("Boundary");
   // boundaryId() throws an InputError listing the valid part names.
   s.part = boundary.empty() ? -1 : mesh.boundaryId(boundary);
   return s;
@@ -416,8 +429,8 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
 void MeshFactory::refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& list,
                                 const ResourceLimit& limit)
 {
-  Teuchos::ParameterList local(list);  // get() with defaults: missing keys mean the defaults
-  const int levels = local.get<int>("Levels", 0);
+  const Teuchos::ParameterList local = validatedLocal(list);
+  const int levels = local.get<int>("Levels");
   if (levels == 0) return;
   const LocalSelection sel = localSelection(*refiner.mesh(), local);
   for (int level = 0; level < levels; ++level) {
