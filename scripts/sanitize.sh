@@ -6,7 +6,7 @@
 #                                           UBSan and run the whole CTest suite under them
 #   scripts/sanitize.sh fuzz [SECONDS [TARGET...]]
 #                                           build the libFuzzer targets (same build) and run each
-#                                           (default: fuzz_deck fuzz_set fuzz_gmsh fuzz_checkpoint) for SECONDS
+#                                           (default: all five targets) for SECONDS
 #                                           (default 600), starting from its seed corpus
 #
 # One build directory serves both ($SC_BUILD_DIR, default <repo>/build-asan): clang is needed for
@@ -54,7 +54,7 @@ case "$mode" in
     seconds=${1:-600}
     shift || true
     targets=("$@")
-    [ ${#targets[@]} -gt 0 ] || targets=(fuzz_deck fuzz_set fuzz_gmsh fuzz_checkpoint)
+    [ ${#targets[@]} -gt 0 ] || targets=(fuzz_deck fuzz_set fuzz_gmsh fuzz_checkpoint fuzz_expression)
     $SC_BUILD "$SC_BUILD_DIR" -j "$SC_JOBS" --target fuzz_targets
     for target in "${targets[@]}"; do
       work="$SC_BUILD_DIR/fuzz/$target"

@@ -135,6 +135,35 @@ TEUCHOS_UNIT_TEST(MeshResources, AvailableMemoryAndTheLimitKey)
   TEST_ASSERT(contains(set.describe(1e6), "'Adaptivity/Max DOFs' is 1000"));
 }
 
+// An explicit limit counts the program's own memory before the mesh (docs/mesh.md "Resource
+// limits"): a limit at or below it is refused naming the key, the baseline and a valid value; above
+// it, the mesh may use what is left. The default limit (the available memory, measured with the
+// program resident) does not count it again.
+TEUCHOS_UNIT_TEST(MeshResources, LimitCountsTheProgramsOwnMemory)
+{
+  const double resident = residentMemoryBytes();
+  out << "resident: " << resident / 1e9 << " GB\n";
+  TEST_ASSERT(resident > 1e6 && resident < 1e12);
+  const std::string msg = errorOf([] { makeResourceLimit(0.05, 2, 1, 2, 0, 8e9, "x", 0.11e9); });
+  out << msg << "\n";
+  TEST_ASSERT(contains(msg, "'Mesh/Memory limit (GB)' = 0.05 is below the memory the program holds "
+                            "before any mesh is made: 0.11 GB (VmRSS of /proc/self/status, summed "
+                            "over the 2 ranks"));
+  TEST_ASSERT(contains(msg, "Give more than 0.11 GB, e.g. 0.7 (about 0.59 GB for the run's data)"));
+  TEST_ASSERT(contains(errorOf([] { makeResourceLimit(0.11, 2, 1, 2, 0, 8e9, "x", 0.11e9); }),
+                       "is below the memory the program holds"));
+  const auto set = makeResourceLimit(0.3, 2, 1, 2, 0, 8e9, "x", 0.1e9);
+  TEST_EQUALITY(set.memoryBytes, 0.3e9);
+  TEST_EQUALITY(set.baselineBytes, 0.1e9);
+  TEST_FLOATING_EQUALITY(set.maxElements(), 0.2e9 / set.bytes(1.0), 1e-14);
+  TEST_FLOATING_EQUALITY(set.totalBytes(1000.0), set.bytes(1000.0) + 0.1e9, 1e-14);
+  TEST_EQUALITY(set.source(), "'Mesh/Memory limit (GB)', of which the program held 0.1 GB before "
+                              "the mesh (VmRSS, 2 ranks)");
+  const auto deflt = makeResourceLimit(0.0, 2, 1, 2, 0, 8e9, "MemAvailable", 0.1e9);
+  TEST_EQUALITY(deflt.baselineBytes, 0.0);
+  TEST_FLOATING_EQUALITY(deflt.maxElements(), 8e9 / deflt.bytes(1.0), 1e-14);
+}
+
 // Without the estimates these hung in Gmsh or died in std::bad_alloc (docs/mesh.md "Resource
 // limits").
 TEUCHOS_UNIT_TEST(MeshResources, TooLargeMeshesAreRefusedBeforeTheyAreMade)

@@ -61,10 +61,17 @@ double bytesPerDof(int dimension);
 /// sysconf(_SC_AVPHYS_PAGES) · page size. `source` says which.
 double availableMemoryBytes(std::string* source = nullptr);
 
+/// Resident memory of this process in bytes (VmRSS of /proc/self/status), 0 if unknown.
+double residentMemoryBytes();
+
 /// The limit a run's mesh is checked against.
 struct ResourceLimit {
   double memoryBytes = std::numeric_limits<double>::infinity();
   std::string memorySource;   ///< e.g. "MemAvailable in /proc/meminfo"
+  /// The program's own memory before any mesh (libraries, MPI, Kokkos: VmRSS summed over the
+  /// ranks), counted in an explicit Mesh/Memory limit (GB); 0 under the default limit, the
+  /// available memory, which is measured with that memory already in use.
+  double baselineBytes = 0.0;
   int dimension = 2;
   int degree = 1;
   int ranks = 1;
@@ -76,15 +83,23 @@ struct ResourceLimit {
   {
     return dofs(elements) * bytesPerDof(dimension) + ranks * elements * kMeshBytesPerElement;
   }
-  double maxElements() const { return memoryBytes / (bytes(1.0)); }
+  /// bytes(elements) and the baseline: what is compared with memoryBytes.
+  double totalBytes(double elements) const { return bytes(elements) + baselineBytes; }
+  double maxElements() const { return (memoryBytes - baselineBytes) / bytes(1.0); }
+  /// memorySource, with the baseline it counts: "'Mesh/Memory limit (GB)', of which the program
+  /// held 0.16 GB before the mesh (VmRSS, 1 rank)".
+  std::string source() const;
   /// "about 3.6e+12 elements, 6e+13 DOFs and 1.3e+08 GB, above the memory limit of 21.3 GB
   /// (MemAvailable in /proc/meminfo)" (and Max DOFs when the DOFs exceed it).
   std::string describe(double elements) const;
 };
 
-/// Limit from Mesh/Memory limit (GB) (0: the available memory).
+/// Limit from Mesh/Memory limit (GB) (0: the available memory). `baselineBytes`: the program's
+/// memory before any mesh on all ranks (residentMemoryBytes summed), which an explicit limit
+/// must exceed (else an InputError naming the key, the baseline and a valid value) and which the
+/// estimates of the mesh are added to (docs/mesh.md "Resource limits").
 ResourceLimit makeResourceLimit(double limitGB, int dimension, int degree, int ranks,
                                 long long maxDofs, double availableBytes,
-                                const std::string& availableSource);
+                                const std::string& availableSource, double baselineBytes = 0.0);
 
 }  // namespace sc::mesh
