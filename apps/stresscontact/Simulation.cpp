@@ -22,6 +22,7 @@
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/assembly/Multigrid.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/BodyFrameCheck.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/contact/Hertz.hpp>
 #include <sc/contact/Obstacle.hpp>
@@ -200,9 +201,12 @@ void Simulation::setupMesh()
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
   assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_});
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
-  if (boundaryConditions_.hasContact())
+  if (boundaryConditions_.hasContact()) {
     contact::checkObstacle(*mesh_, contact_,
                            boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
+    contact::checkBodyFrameFaces(*mesh_, contact_,
+                                 boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
+  }
   // Every rank needs an element of the initial mesh; found here, before anything is written
   // (the partitioner would find it only after the output directory exists).
   SC_THROW_IF(mesh_->numElements() < comm_->getSize(), core::InputError,
