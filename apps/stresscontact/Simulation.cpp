@@ -65,6 +65,13 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   // Contact data is read (and checked against the dimension) only if the scene has contact.
   if (boundaryConditions_.hasContact())
     contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
+  // A large Coulomb coefficient inflates η's friction part, not the solution (docs/theory.md).
+  if (const std::string w = estimator::largeFrictionWarning(contact_);
+      boundaryConditions_.hasContact() && !w.empty()) {
+    warnings_.push_back(w);
+    if (comm_->getRank() == 0)
+      std::cerr << "stresscontact: warning: " << w << std::endl;
+  }
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -14,6 +15,22 @@
 #include "sc/estimator/DisplacementReconstruction.hpp"
 
 namespace sc::estimator {
+
+std::string largeFrictionWarning(const contact::ContactSettings& settings)
+{
+  if (settings.frictionLaw != contact::FrictionLaw::Coulomb ||
+      !(settings.frictionCoefficient > kLargeFrictionCoefficient))
+    return "";
+  std::ostringstream os;
+  os << "'Contact/Friction coefficient' = " << settings.frictionCoefficient << " is above "
+     << kLargeFrictionCoefficient << ": the estimator's friction part bounds the tangential work "
+     << "in the stick zone by mu_F |sigma_N| |u^R_T|, so at a given mesh eta grows like "
+     << "sqrt(mu_F) and it, and the adaptive marking, are dominated by that part; the solution "
+     << "and the forces are not (hertz2d.xml, cycle 0: eta/|A^1/2 sigma_h| = 0.19 at mu_F = 0.4, "
+     << "0.42 at 10, 122 at 1e6, the same force 108.787; docs/theory.md \"Friction part for "
+     << "large mu_F\").";
+  return os.str();
+}
 
 ContactContribution::ContactContribution(const disc::MixedElasticitySpace& space,
                                          const contact::ContactSettings& settings,

@@ -27,6 +27,17 @@ class MixedElasticitySpace;
 
 namespace sc::estimator {
 
+/// The friction part does not vanish in the stick limit: in the stick zone it is about
+/// μ_F|σ_N| |u^R_T|, with u^R_T the reconstruction's tangential trace (its error there), so at
+/// a fixed mesh η grows like √μ_F while the solution does not change (docs/theory.md §"Friction
+/// part for large μ_F"). On the Hertz deck it is 33–54% of η² at μ_F = 2 over the first three
+/// cycles, 58–86% at 5 to 10 and 98% at 100; above this Coulomb coefficient a run is warned.
+inline constexpr double kLargeFrictionCoefficient = 2.0;
+
+/// For Coulomb friction with Contact/Friction coefficient above kLargeFrictionCoefficient, the
+/// warning that η and the marking are dominated by the friction part; "" otherwise.
+std::string largeFrictionWarning(const contact::ContactSettings& settings);
+
 class ContactContribution : public EstimatorContribution {
 public:
   ContactContribution(const disc::MixedElasticitySpace& space, const contact::ContactSettings& settings,
