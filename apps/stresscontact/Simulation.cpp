@@ -47,6 +47,7 @@
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "DeckParameters.hpp"
+#include "ForceBalance.hpp"
 
 namespace sc::app {
 
@@ -574,6 +575,9 @@ void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std
     c["contact"] = {{"force", force},
                     {d == 2 ? "half_width" : "radius", cs.zoneSize},
                     {"max_pressure", cs.maxPressure},
+                    {"min_pressure", cs.minPressure},
+                    {"area", cs.area},
+                    {"stick_area", cs.stickArea},
                     {d == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
                     {d == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
                     {d == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
@@ -626,6 +630,16 @@ void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std
   if (!stopReason.empty())
     c["stop_reason"] = stopReason;
   if (solved_) {
+    // Reactions and the force balance, with the contact force recorded above (docs/output.md).
+    std::array<double, 3> contactForce{0.0, 0.0, 0.0};
+    if (contactSolver_)
+      for (std::size_t i = 0; i < c["contact"]["force"].size(); ++i)
+        contactForce[i] = c["contact"]["force"][i].get<double>();
+    const auto forces = computeCycleForces(
+        *assembler_, *solution_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
+        contactSolver_ ? &contactForce : nullptr, output_.momentPoint, *comm_);
+    c["reactions"] = forces.reactions;
+    c["force_balance"] = forces.balance;
     c["dofs"] = {{"stress", space_->numStressDofs()},
                  {"displacement", space_->numDisplacementDofs()},
                  {"rotation", space_->numRotationDofs()},
@@ -698,6 +712,7 @@ void Simulation::recordCost()
     os << "eta " << estimate_->total() << ", ";
   if (solved_ && contactSolver_)
     os << contactSolver_->statistics().newtonIterations << " Newton steps, ";
+  os << forcesBrief(c);
   os << std::fixed << std::setprecision(3);
   double total = 0.0;
   for (const auto& [phase, seconds] : timings)

@@ -68,7 +68,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
   };
   // Local contributions: force, pressure, counts, centroid of active points, zone areas.
   double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // force(3), active count, centroid(3), areas(2)
-  double localMax = 0.0;
+  double localMax = 0.0, localMin = 1e300;
   long long counts[3] = {0, 0, 0};
   for (const auto& p : points) {
     for (int i = 0; i < dim; ++i) {
@@ -78,6 +78,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     localMax = std::max(localMax, -p.sigmaNAtDofPoint);  // the trace at the DOF points
     ++counts[static_cast<int>(status(p))];
     if (status(p) != PointStatus::Free) {
+      localMin = std::min(localMin, -p.sigmaNAtDofPoint);
       local[3] += 1.0;
       for (int i = 0; i < dim; ++i)
         local[4 + i] += p.x[i];
@@ -95,6 +96,9 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
   double global[9];
   Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 9, local, global);
   Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, 1, &localMax, &out.maxPressure);
+  double globalMin = 1e300;
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MIN, 1, &localMin, &globalMin);
+  out.minPressure = globalMin < 1e299 ? globalMin : 0.0;
   long long gcounts[3];
   Teuchos::reduceAll<int, long long>(comm, Teuchos::REDUCE_SUM, 3, counts, gcounts);
   for (int i = 0; i < dim; ++i) {
@@ -102,6 +106,8 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     out.center[i] = global[3] > 0 ? global[4 + i] / global[3] : 0.0;
   }
   auto fromArea = [dim](double area) { return dim == 2 ? 0.5 * area : std::sqrt(area / M_PI); };
+  out.area = global[7];
+  out.stickArea = global[8];
   out.equivalentZoneSize = fromArea(global[7]);
   out.equivalentStickZoneSize = fromArea(global[8]);
   out.numFree = gcounts[0];

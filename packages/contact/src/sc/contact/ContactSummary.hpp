@@ -23,6 +23,14 @@ struct ContactSummary {
   double stickZoneSize = 0.0;     ///< the same for the stick zone (0 without friction)
   double equivalentZoneSize = 0.0;       ///< from the zone's area: A/2 (2D), √(A/π) (3D)
   double equivalentStickZoneSize = 0.0;  ///< the same for the stick zone
+  /// Area A of the contact zone (2D: length per unit thickness): Σ over the points in contact of
+  /// their share |∫_F w_p ds · (n_p·ν)| of their face (Σ_p w_p = 1 on a face, so a face whose
+  /// points are all in contact counts with its whole measure; n_p·ν = −1 in the obstacle frame).
+  double area = 0.0;
+  double stickArea = 0.0;  ///< the same over the stick points (0 without friction)
+  /// The smallest −σ_N at the DOF points of the points in contact (0 when none is): with
+  /// maxPressure, the range of the contact pressure over the zone's points.
+  double minPressure = 0.0;
   std::array<double, 3> center{};
   long long numFree = 0, numStick = 0, numSlip = 0;
 };

@@ -1,7 +1,9 @@
 #include <sc/io/OutputSettings.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/core/Parameters.hpp>
 
+#include <algorithm>
 #include <exception>
 
 namespace sc::io {
@@ -21,6 +23,12 @@ Teuchos::RCP<const Teuchos::ParameterList> OutputSettings::getValidParameters()
                   "XDMF + parallel HDF5 for ParaView, one step per adaptive cycle.");
     pl->set<bool>("Write contact CSV", true,
                   "Write contact_cycle<N>.csv with the contact-boundary quantities of each cycle.");
+    sc::core::declareRealArray(
+        *pl, "Moment point", Teuchos::tuple<double>(0.0, 0.0, 0.0),
+        "The point x0 about which summary.json gives the moment of each reaction, the integral "
+        "of (x - x0) x sigma n over the part (3 components x, y, z; in 2D z is not used and the "
+        "moment is its z component).",
+        {3});
     return Teuchos::RCP<const Teuchos::ParameterList>(pl);
   }();
   return valid;
@@ -42,6 +50,8 @@ OutputSettings::OutputSettings(const Teuchos::ParameterList& outputSublist)
   baseName = pl.get<std::string>("Base name");
   writeXdmf = pl.get<bool>("Write XDMF");
   writeContactCsv = pl.get<bool>("Write contact CSV");
+  const auto point = pl.get<Teuchos::Array<double>>("Moment point");
+  std::copy(point.begin(), point.end(), momentPoint.begin());
   SC_THROW_IF(directory.empty(), sc::core::InputError,
               "Output/Directory is empty; give a directory such as \"output\"");
   SC_THROW_IF(baseName.empty() || baseName.find('/') != std::string::npos, sc::core::InputError,

@@ -4,6 +4,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include <array>
 #include <string>
 
 namespace sc::io {
@@ -28,6 +29,7 @@ public:
   std::string baseName;      ///< Output/Base name
   bool writeXdmf;            ///< Output/Write XDMF
   bool writeContactCsv;      ///< Output/Write contact CSV
+  std::array<double, 3> momentPoint{};  ///< Output/Moment point (x0 of the reactions' moments)
 };
 
 }  // namespace sc::io

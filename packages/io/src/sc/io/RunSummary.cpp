@@ -39,6 +39,8 @@ Json RunSummary::makeCycleEntry(int cycle)
   c["eta"] = Json::object();
   c["errors"] = Json::object();
   c["contact"] = Json::object();
+  c["reactions"] = Json::object();
+  c["force_balance"] = Json::object();
   c["nonlinear_iterations"] = nullptr;
   c["linear_solves"] = nullptr;
   c["linear_iterations"] = nullptr;
