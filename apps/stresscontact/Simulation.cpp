@@ -207,7 +207,15 @@ void Simulation::setupMesh()
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
                                          params_->sublist("Mesh").get<std::string>("Source"));
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
-  assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_});
+  // A plane obstacle may hold the body along its normal, when nothing else does.
+  assembly::ContactPlane plane;
+  if (boundaryConditions_.hasContact() && contact_.obstacle == "Plane")
+    std::copy(contact_.obstacleNormal.begin(), contact_.obstacleNormal.end(), plane.normal.begin());
+  contactHoldsBody_ =
+      assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
+                                      boundaryConditions_.hasContact() && contact_.obstacle == "Plane"
+                                          ? &plane
+                                          : nullptr) >= 0;
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
   if (boundaryConditions_.hasContact()) {
     contact::checkObstacle(*mesh_, contact_,
@@ -385,6 +393,7 @@ void Simulation::solveContact()
     contactSolver_ = std::make_unique<contact::ActiveSetSolver>(
         *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
         params_->sublist("Contact").sublist("Newton"), comm_);
+    contactSolver_->setContactHoldsBody(contactHoldsBody_);
   }
   {
     // Nested iteration: the previous cycle's contact state is the Newton start, carried by the

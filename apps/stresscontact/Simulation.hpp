@@ -202,6 +202,9 @@ private:
   /// For every face of the current mesh, the boundary face of the previous mesh that contains it
   /// (-1 off the boundary), from the last refinement step; empty without one (first cycle).
   std::vector<int> contactFaceParents_;
+  /// No Displacement part, and the contact with the plane obstacle alone holds the body along
+  /// its normal (assembly::checkLoadsAndSupports).
+  bool contactHoldsBody_ = false;
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<io::XdmfWriter> writer_;

@@ -64,11 +64,13 @@ std::map<std::string, int> symmetryAxes(const mesh::SimplexMesh& m,
   return axes;
 }
 
-void checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data)
+int checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data,
+                          const ContactPlane* plane)
 {
   const int d = m.dim();
   const auto& bcs = data.boundaryConditions;
   const auto axes = symmetryAxes(m, bcs);
+  int heldByContact = -1;
   if (bcs.boundariesOfType(core::BoundaryType::Displacement).empty() && !axes.empty()) {
     std::set<int> normal;
     std::ostringstream parts;
@@ -82,11 +84,26 @@ void checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& dat
         missing << (missing.tellp() > 0 ? ", " : "") << axisName(c);
     // A Symmetry part in x_i = const fixes the rigid motions' u_i on a set spanning the other
     // directions: the translation along x_i and the rotations that move x_i. All d axes fix all.
-    SC_THROW_IF(static_cast<int>(normal.size()) < d, core::InputError,
+    // With d − 1 axes every rotation and d − 1 translations are fixed: what is left is the
+    // translation along the last axis, which a contact plane normal to it holds once any point
+    // is in contact (the contact solver starts from the points nearest the plane).
+    int planeAxis = -1;
+    if (plane && bcs.hasContact())
+      for (int c = 0; c < d; ++c)
+        if (std::abs(plane->normal[c]) >= 1.0 - 1e-12)
+          planeAxis = c;
+    if (static_cast<int>(normal.size()) == d - 1 && planeAxis >= 0 && !normal.count(planeAxis))
+      heldByContact = planeAxis;
+    SC_THROW_IF(static_cast<int>(normal.size()) < d && heldByContact < 0, core::InputError,
                 "the deck has no Displacement part and its Symmetry parts " << parts.str()
                     << " leave rigid-body motions free (nothing holds the body along "
                     << missing.str() << "): the problem is ill-posed. Add a Symmetry part normal "
-                    << "to each missing axis or a Displacement part.");
+                    << "to each missing axis or a Displacement part."
+                    << (plane && bcs.hasContact()
+                            ? " (The contact with the plane 'Contact/Obstacle normal' holds the "
+                              "body along that normal only when it is a coordinate axis and the "
+                              "Symmetry parts are normal to every other axis.)"
+                            : ""));
   }
   // Formulas: finite at the vertices where they are used (Expression throws otherwise, naming the
   // key, the formula and the point).
@@ -102,6 +119,7 @@ void checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& dat
     for (const auto& e : data.bodyForce.expression)
       for (int v = 0; v < m.numVertices(); ++v)
         e(m.vertex(v), d);
+  return heldByContact;
 }
 
 }  // namespace sc::assembly

@@ -199,6 +199,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   const auto& m = space.mesh();
   const int d = m.dim();
   const double cap = missCap(m);
+  meshSize_ = cap / 10.0;
   const double twoMu = 2.0 * material.shearModulus();
 
   std::vector<int> contactIds;
@@ -671,6 +672,41 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
   return A;
 }
 
+void ActiveSetSolver::startNearestPointsInContact()
+{
+  long long active = 0, globalActive = 0;
+  double nearest = 1e300, globalNearest = 1e300;
+  for (const auto& p : points_) {
+    active += p.status != PointStatus::Free;
+    nearest = std::min(nearest, p.gap / p.weight);
+  }
+  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &active, &globalActive);
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MIN, 1, &nearest, &globalNearest);
+  if (globalActive > 0)
+    return;
+  // The mean gap, not the gap at the point: the weighted gap G_p is what the contact row
+  // prescribes (r_N = G_p), and the weights are positive (checked in the constructor).
+  for (auto& p : points_)
+    if (p.gap / p.weight <= globalNearest + 1e-9 * meshSize_) {
+      p.status = settings_.needsFriction() ? PointStatus::Stick : PointStatus::Slip;
+      p.direction = {0.0, 0.0};
+    }
+}
+
+void ActiveSetSolver::checkSomePointInContact(int step) const
+{
+  long long active = 0, global = 0;
+  for (const auto& p : points_)
+    active += p.status != PointStatus::Free;
+  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &active, &global);
+  SC_THROW_IF(global == 0, core::ConvergenceError,
+              "no contact point is in contact after Newton step "
+                  << step << ", but the contact alone holds the body along the obstacle's normal "
+                  << "(no Displacement part; the Symmetry parts hold the other axes): the loads "
+                  << "pull the body off the obstacle and there is no equilibrium "
+                  << "(docs/theory.md §\"Loads and supports\").");
+}
+
 double ActiveSetSolver::trescaBound(const ContactPoint& p) const
 {
   return fixedPoint_ ? p.frictionBound : settings_.trescaBound;
@@ -752,12 +788,16 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     }
     return s;
   };
+  if (holdsBody_)
+    startNearestPointsInContact();
   history.push_back(signature());
   // A direct solver is done with the previous step's matrix once it has factorised it: its
   // values are overwritten in the next step. A Krylov solver's preconditioner may keep it.
   Teuchos::RCP<CrsMatrix> A;
   for (int it = 1; it <= maxIterations_; ++it) {
     const auto stepStart = std::chrono::steady_clock::now();
+    if (holdsBody_)
+      checkSomePointInContact(it - 1);
     A = modifiedMatrix(K, rhs, b, solver.isIterative() ? Teuchos::null : A);
     // Contact rows make the system non-symmetric. Same graph every step: a direct solver keeps
     // its symbolic analysis and refactorises; x (the previous iterate) is a Krylov solver's

@@ -115,6 +115,14 @@ public:
   using StepCallback = std::function<void(int step, long long changes, double seconds)>;
   void setStepCallback(StepCallback callback) { stepCallback_ = std::move(callback); }
 
+  /// The contact alone holds the body along the obstacle's normal (no Displacement part, and
+  /// Symmetry parts normal to every other axis: assembly::checkLoadsAndSupports). Without a
+  /// point in contact the system is then singular, so a Newton start with none puts the points
+  /// nearest the obstacle in contact (smallest mean gap G_p / ∫_F w_p, within 1e-9 of the
+  /// mesh's size; stick with friction), and a step that leaves no point in contact stops with a
+  /// ConvergenceError (the loads pull the body off the obstacle: no equilibrium).
+  void setContactHoldsBody(bool holds) { holdsBody_ = holds; }
+
   const std::vector<ContactPoint>& points() const { return points_; }
   const ContactStatistics& statistics() const { return stats_; }
   long long globalNumPoints() const;
@@ -126,6 +134,10 @@ private:
   void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
                       MultiVector& x);
   double trescaBound(const ContactPoint& p) const;
+  /// setContactHoldsBody: the start with the nearest points in contact, and the check that a
+  /// step has some point in contact (collective).
+  void startNearestPointsInContact();
+  void checkSomePointInContact(int step) const;
   /// K with the contact rows of the current state, and its right-hand side. `reuse`: the
   /// matrix of the previous Newton step on K's graph, whose values are overwritten (null: a new
   /// copy of K).
@@ -158,6 +170,8 @@ private:
   bool fixedPoint_ = false;  ///< inside the Coulomb fixed point: Tresca rows with p.frictionBound
   ContactStatistics stats_;
   StepCallback stepCallback_;
+  bool holdsBody_ = false;
+  double meshSize_ = 0.0;  ///< the diagonal of the mesh's bounding box
 };
 
 }  // namespace sc::contact
