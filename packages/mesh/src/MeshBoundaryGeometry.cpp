@@ -84,7 +84,10 @@ struct MeshBoundaryGeometry::Bins {
   }
   long long cell(double x, int axis) const
   {
-    return static_cast<long long>(std::floor((x - lo[axis]) / size));
+    // Clamped so that a point far from the part (never one that refinement makes) cannot
+    // overflow the key; such a point finds no cell and falls back to all faces.
+    const double c = std::floor((x - lo[axis]) / size);
+    return static_cast<long long>(std::clamp(c, -1e5, 1e5));
   }
 };
 
