@@ -526,6 +526,101 @@ TEUCHOS_UNIT_TEST(XdmfWriter, BadPieceOnLastRankThrowsInputErrorOnAllRanks)
     TEST_EQUALITY(temporaries(dir).size(), 0u);
 }
 
+// A point cloud (CellType::Vertex, XDMF Polyvertex) beside a mesh grid, as the contact points
+// of a cycle are written (docs/output.md "Fields"): rank r owns 2r + 1 points except rank 1,
+// which owns none; the writer numbers one cell per point (global index = rank offset + i),
+// writes the integer point field as int32 and the partition per point.
+TEUCHOS_UNIT_TEST(XdmfWriter, PointCloudGridWithIntegerPointField)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const int rank = comm->getRank(), size = comm->getSize();
+  const std::string dir = freshDirectory(*comm, "xdmf_points");
+  sc::io::XdmfWriter writer(comm, dir, "solution");
+  auto count = [](int r) { return r == 1 ? 0 : 2 * r + 1; };
+  int offset = 0, total = 0;
+  for (int r = 0; r < size; ++r) {
+    if (r < rank)
+      offset += count(r);
+    total += count(r);
+  }
+  GridPiece cloud("contact", CellType::Vertex, 2);
+  std::vector<double> pressure, traction;
+  std::vector<int> status;
+  for (int i = 0; i < count(rank); ++i) {
+    const double g = offset + i;
+    cloud.coordinates.insert(cloud.coordinates.end(), {g, -2 * g});
+    pressure.push_back(10 * g);
+    traction.insert(traction.end(), {g, 1.0});
+    status.push_back((offset + i) % 3);
+  }
+  cloud.addPointField("contact_pressure", FieldKind::Scalar, pressure);
+  cloud.addPointField("tangential_traction", FieldKind::Vector, traction);
+  cloud.addPointField("status", status);
+  auto grids = pieces2D({2, 3}, rank, size);
+  grids.push_back(cloud);
+  writer.writeStep(0, grids);
+
+  // A vertex grid takes no connectivity, and an integer point field one value per point.
+  auto withCells = grids;
+  withCells[2].connectivity = {0};
+  TEST_THROW(writer.writeStep(1, withCells), sc::core::InputError);
+  auto shortField = grids;
+  if (rank == size - 1)
+    shortField[2].integerPointFields[0].values.push_back(7);
+  TEST_THROW(writer.writeStep(1, shortField), sc::core::InputError);
+  comm->barrier();
+  if (rank != 0)
+    return;
+
+  const auto n = static_cast<hsize_t>(total);
+  hid_t f = H5Fopen(writer.h5Path(0).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  TEST_ASSERT(f >= 0);
+  if (f < 0)
+    return;
+  std::vector<double> xyz, ids, p, t, st, part;
+  for (int r = 0, g = 0; r < size; ++r)
+    for (int i = 0; i < count(r); ++i, ++g) {
+      xyz.insert(xyz.end(), {double(g), -2.0 * g, 0.0});
+      ids.push_back(g);
+      p.push_back(10.0 * g);
+      t.insert(t.end(), {double(g), 1.0, 0.0});
+      st.push_back(g % 3);
+      part.push_back(r);
+    }
+  const Dataset geo = readDataset(f, "/contact/geometry");
+  TEST_COMPARE_ARRAYS(geo.dims, (std::vector<hsize_t>{n, 3}));
+  TEST_COMPARE_ARRAYS(geo.values, xyz);
+  const Dataset topo = readDataset(f, "/contact/topology");
+  TEST_COMPARE_ARRAYS(topo.dims, (std::vector<hsize_t>{n}));
+  TEST_COMPARE_ARRAYS(topo.values, ids);
+  TEST_COMPARE_ARRAYS(readDataset(f, "/contact/point/contact_pressure").values, p);
+  TEST_COMPARE_ARRAYS(readDataset(f, "/contact/point/tangential_traction").values, t);
+  TEST_COMPARE_ARRAYS(readDataset(f, "/contact/point/status").values, st);
+  TEST_COMPARE_ARRAYS(readDataset(f, "/contact/cell/partition").values, part);
+  hid_t statusSet = H5Dopen2(f, "/contact/point/status", H5P_DEFAULT);
+  hid_t type = H5Dget_type(statusSet);
+  TEST_EQUALITY(H5Tget_class(type), H5T_INTEGER);
+  TEST_EQUALITY(H5Tget_size(type), std::size_t{4});
+  H5Tclose(type);
+  H5Dclose(statusSet);
+  H5Fclose(f);
+
+  checkXdmf(dir, writer.xdmfPath(), {0.0}, out, success);
+  std::ifstream in(writer.xdmfPath());
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string xml = s.str();
+  TEST_ASSERT(xml.find("<Grid Name=\"contact\" GridType=\"Uniform\">") != std::string::npos);
+  TEST_ASSERT(xml.find("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + std::to_string(total) +
+                       "\" NodesPerElement=\"1\">") != std::string::npos);
+  TEST_ASSERT(xml.find("<Attribute Name=\"status\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+                       "            <DataItem Dimensions=\"" + std::to_string(total) +
+                       "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">solution_c0000.h5:/contact/point/status</DataItem>") !=
+              std::string::npos);
+  TEST_ASSERT(xml.find("<Attribute Name=\"tangential_traction\" AttributeType=\"Vector\" Center=\"Node\">") !=
+              std::string::npos);
+}
+
 TEUCHOS_UNIT_TEST(XdmfWriter, UnwritableDirectoryThrowsNamingIt)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();

@@ -13,6 +13,7 @@ int verticesPerCell(CellType type)
     case CellType::Line: return 2;
     case CellType::Triangle: return 3;
     case CellType::Tetrahedron: return 4;
+    case CellType::Vertex: return 1;
   }
   throw sc::core::InternalError("verticesPerCell: unknown CellType");
 }
@@ -23,6 +24,7 @@ std::string xdmfTopologyName(CellType type)
     case CellType::Line: return "Polyline";
     case CellType::Triangle: return "Triangle";
     case CellType::Tetrahedron: return "Tetrahedron";
+    case CellType::Vertex: return "Polyvertex";
   }
   throw sc::core::InternalError("xdmfTopologyName: unknown CellType");
 }
@@ -33,6 +35,7 @@ std::string cellTypeName(CellType type)
     case CellType::Line: return "line";
     case CellType::Triangle: return "triangle";
     case CellType::Tetrahedron: return "tetrahedron";
+    case CellType::Vertex: return "vertex";
   }
   throw sc::core::InternalError("cellTypeName: unknown CellType");
 }

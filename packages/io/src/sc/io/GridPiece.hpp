@@ -20,7 +20,7 @@ struct Field {
   std::vector<double> values;
 };
 
-/// A scalar field with integer values (ids, flags), stored as 32-bit integers.
+/// A scalar field with integer values (ids, flags, states), stored as 32-bit integers.
 struct IntegerField {
   std::string name;
   std::vector<int> values;
@@ -39,11 +39,13 @@ struct GridPiece {
   std::vector<double> coordinates;
   std::string geometryFrom;
 
-  /// Owned cells, verticesPerCell(cellType) global vertex indices each.
+  /// Owned cells, verticesPerCell(cellType) global vertex indices each. Empty for
+  /// CellType::Vertex: a point cloud has one cell per owned vertex, numbered by the writer.
   std::vector<long long> connectivity;
 
   std::vector<Field> pointFields;
   std::vector<Field> cellFields;
+  std::vector<IntegerField> integerPointFields;
   std::vector<IntegerField> integerCellFields;
 
   /// Name/value pairs written as XDMF <Information> elements and as string attributes of the
@@ -62,6 +64,10 @@ struct GridPiece {
   {
     cellFields.push_back({std::move(fieldName), kind, std::move(values)});
   }
+  void addPointField(std::string fieldName, std::vector<int> values)
+  {
+    integerPointFields.push_back({std::move(fieldName), std::move(values)});
+  }
   void addCellField(std::string fieldName, std::vector<int> values)
   {
     integerCellFields.push_back({std::move(fieldName), std::move(values)});
@@ -73,9 +79,12 @@ struct GridPiece {
 
   /// Owned vertices of this piece (0 if geometryFrom is set).
   std::size_t localVertexCount() const { return coordinates.size() / static_cast<std::size_t>(spaceDim); }
+  /// Owned cells (the owned vertices for CellType::Vertex).
   std::size_t localCellCount() const
   {
-    return connectivity.size() / static_cast<std::size_t>(verticesPerCell(cellType));
+    return cellType == CellType::Vertex
+               ? localVertexCount()
+               : connectivity.size() / static_cast<std::size_t>(verticesPerCell(cellType));
   }
 };
 

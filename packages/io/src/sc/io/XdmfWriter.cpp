@@ -190,6 +190,8 @@ std::string signature(const std::vector<GridPiece>& grids)
       s << "  point " << f.name << ' ' << fieldKindName(f.kind) << '\n';
     for (const auto& f : g.cellFields)
       s << "  cell " << f.name << ' ' << fieldKindName(f.kind) << '\n';
+    for (const auto& f : g.integerPointFields)
+      s << "  int point " << f.name << '\n';
     for (const auto& f : g.integerCellFields)
       s << "  int cell " << f.name << '\n';
     for (const auto& [k, v] : g.information)
@@ -234,6 +236,13 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
       return err.str();
     }
     std::size_t vertices = g.localVertexCount();
+    if (g.cellType == CellType::Vertex && (!g.geometryFrom.empty() || !g.connectivity.empty())) {
+      err << "grid '" << g.name << "': a vertex grid (point cloud) has its own coordinates and "
+          << "no connectivity (one cell per vertex, numbered by the writer), but it has "
+          << (g.geometryFrom.empty() ? std::to_string(g.connectivity.size()) + " connectivity entries"
+                                     : "geometryFrom = '" + g.geometryFrom + "'");
+      return err.str();
+    }
     if (!g.geometryFrom.empty()) {
       const auto it = std::find_if(grids.begin(), grids.begin() + static_cast<long>(gi),
                                    [&](const GridPiece& o) { return o.name == g.geometryFrom; });
@@ -300,6 +309,15 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
         err << "grid '" << g.name << "': cell field '" << f.name << "' (" << fieldKindName(f.kind)
             << ") has " << f.values.size() << " values, expected " << want << " (" << cells
             << " owned cells x " << inputComponents(f.kind, g.spaceDim) << ")";
+        return err.str();
+      }
+    }
+    for (const auto& f : g.integerPointFields) {
+      if (!checkName(f.name))
+        return err.str();
+      if (f.values.size() != vertices) {
+        err << "grid '" << g.name << "': integer point field '" << f.name << "' has "
+            << f.values.size() << " values, expected " << vertices << " (owned vertices)";
         return err.str();
       }
     }
@@ -439,6 +457,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
         bytes += nv * static_cast<unsigned long long>(storedComponents(f.kind)) * 8;
       for (const auto& f : grids[g].cellFields)
         bytes += nc * static_cast<unsigned long long>(storedComponents(f.kind)) * 8;
+      bytes += nv * 4 * grids[g].integerPointFields.size();
       bytes += nc * 4 * (grids[g].integerCellFields.size() + 1);  // + partition
     }
     bytes += bytes / 20 + (64ull << 10);
@@ -499,8 +518,15 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
                      xyz.empty() ? nullptr : xyz.data(), nvLocal, nvOffset, nvTotal, 3);
       }
       const std::string topologyPath = group + "/topology";
+      // A point cloud's cells are its vertices, in their global numbering.
+      std::vector<long long> identity;
+      if (grid.cellType == CellType::Vertex)
+        for (hsize_t v = 0; v < nvLocal; ++v)
+          identity.push_back(static_cast<long long>(nvOffset + v));
+      const std::vector<long long>& connectivity =
+          grid.cellType == CellType::Vertex ? identity : grid.connectivity;
       writeDataset(ctx, file.get(), topologyPath, H5T_NATIVE_LLONG, H5T_STD_I64LE,
-                   grid.connectivity.empty() ? nullptr : grid.connectivity.data(), ncLocal,
+                   connectivity.empty() ? nullptr : connectivity.data(), ncLocal,
                    ncOffset, ncTotal, static_cast<hsize_t>(nvpc));
 
       // The grid's XDMF element. A grid without cells anywhere is left out of the .xdmf (its
@@ -512,8 +538,8 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
           << "\"/>\n";
       x << "          <Topology TopologyType=\"" << xdmfTopologyName(grid.cellType)
         << "\" NumberOfElements=\"" << ncTotal << "\"";
-      if (grid.cellType == CellType::Line)
-        x << " NodesPerElement=\"2\"";
+      if (grid.cellType == CellType::Line || grid.cellType == CellType::Vertex)
+        x << " NodesPerElement=\"" << nvpc << "\"";
       x << ">\n            " << dataItem(h5Name, topologyPath, ncTotal, nvpc, "Int", 8)
         << "\n          </Topology>\n"
         << "          <Geometry GeometryType=\"XYZ\">\n            "
@@ -534,13 +560,16 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
           << dataItem(h5Name, path, onPoints ? nvTotal : ncTotal, comps, "Float", 8)
           << "\n          </Attribute>\n";
       };
-      auto writeIntField = [&](const std::string& name, const std::vector<int>& values) {
-        const std::string path = group + "/cell/" + name;
+      auto writeIntField = [&](const std::string& name, const std::vector<int>& values,
+                               bool onPoints) {
+        const std::string path = group + (onPoints ? "/point/" : "/cell/") + name;
+        const hsize_t n = onPoints ? nvTotal : ncTotal;
         writeDataset(ctx, file.get(), path, H5T_NATIVE_INT, H5T_STD_I32LE,
-                     values.empty() ? nullptr : values.data(), ncLocal, ncOffset, ncTotal, 1);
-        x << "          <Attribute Name=\"" << name
-          << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n            "
-          << dataItem(h5Name, path, ncTotal, 1, "Int", 4) << "\n          </Attribute>\n";
+                     values.empty() ? nullptr : values.data(), onPoints ? nvLocal : ncLocal,
+                     onPoints ? nvOffset : ncOffset, n, 1);
+        x << "          <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\""
+          << (onPoints ? "Node" : "Cell") << "\">\n            "
+          << dataItem(h5Name, path, n, 1, "Int", 4) << "\n          </Attribute>\n";
       };
 
       // Intermediate groups for the fields (H5Dcreate2 does not create them by default).
@@ -555,9 +584,11 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
         writeField(f, true);
       for (const auto& f : grid.cellFields)
         writeField(f, false);
+      for (const auto& f : grid.integerPointFields)
+        writeIntField(f.name, f.values, true);
       for (const auto& f : grid.integerCellFields)
-        writeIntField(f.name, f.values);
-      writeIntField("partition", std::vector<int>(ncLocal, rank));
+        writeIntField(f.name, f.values, false);
+      writeIntField("partition", std::vector<int>(ncLocal, rank), false);
       x << "        </Grid>\n";
       if (ncTotal > 0)
         stepXml << x.str();

@@ -19,7 +19,10 @@
 //   boundary.connectivity = ...;                // owned facets (may be empty)
 //   boundary.addCellField("boundary_id", ids);  // std::vector<int>
 //   boundary.setBoundaryNames({{1, "contact"}, {2, "clamped"}});
-//   writer.writeStep(cycle, {domain, boundary});
+//   sc::io::GridPiece points("contact", sc::io::CellType::Vertex, 2);  // a point cloud:
+//   points.coordinates = ...;                    // owned points; one cell each, no connectivity
+//   points.addPointField("status", states);      // std::vector<int>, stored as int32
+//   writer.writeStep(cycle, {domain, boundary, points});
 //
 // Limit: validation is collective, but a failure inside HDF5 on one rank only (not the usual
 // case: the library fails collectively) cannot be reported without the other ranks waiting.
