@@ -10,7 +10,8 @@
 # killed run NP.
 # Then every per-cycle number of summary.json must agree with the uninterrupted run within RTOL
 # (compare_summaries), the XDMF series must list every cycle once, every cycle's .h5 and CSV must
-# be there and no temporary left; with SAME_FILES the CSVs and the .xdmf must be byte-identical.
+# be there and no temporary left, history.csv must have a row per cycle; with SAME_FILES the CSVs
+# and the .xdmf must be byte-identical, and history.csv too but for its seconds.
 # Finally the comparison is shown able to fail: one number changed by 1e-10 (relative) in a copy
 # of the restarted summary must be reported.
 foreach(v SETS MPIFLAGS IGNORE)
@@ -58,7 +59,7 @@ if(KILL_CYCLE EQUAL 0)
     message(FATAL_ERROR "the run killed in cycle 0 left a checkpoint")
   endif()
 else()
-  set(expected checkpoint.h5 summary.json solution_c${killedH5}.h5 contact_cycle${KILL_CYCLE}.csv)
+  set(expected checkpoint.h5 summary.json history.csv solution_c${killedH5}.h5 contact_cycle${KILL_CYCLE}.csv)
 endif()
 foreach(f ${expected})
   if(NOT EXISTS "${OUT}/killed/${f}")
@@ -116,6 +117,30 @@ if(SAME_FILES)
   if(NOT same EQUAL 0)
     message(FATAL_ERROR "solution.xdmf differs from the uninterrupted run's")
   endif()
+endif()
+# history.csv (docs/output.md "history.csv"): a header and one row per cycle; with SAME_FILES
+# byte-identical to the uninterrupted run's but for its last column, the seconds of each cycle
+# (wall time, different in every run).
+foreach(run full killed)
+  file(STRINGS "${OUT}/${run}/history.csv" lines)
+  list(LENGTH lines n)
+  math(EXPR rows "${cycles} + 1")
+  if(NOT n EQUAL rows)
+    message(FATAL_ERROR "${run}/history.csv has ${n} lines, expected a header and ${cycles} rows")
+  endif()
+  list(GET lines 0 header)
+  if(NOT header MATCHES "^cycle,.*,seconds$")
+    message(FATAL_ERROR "${run}/history.csv: the header '${header}' does not end with seconds")
+  endif()
+  set(history_${run} "")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE ",[^,]*$" "" line "${line}")
+    string(APPEND history_${run} "${line}\n")
+  endforeach()
+endforeach()
+if(SAME_FILES AND NOT history_full STREQUAL history_killed)
+  message(FATAL_ERROR "history.csv (without the seconds) differs from the uninterrupted run's:\n"
+                      "${history_full}restarted:\n${history_killed}")
 endif()
 
 set(ignores)

@@ -29,18 +29,18 @@ endfunction()
 
 # 1. Two cycles, fields and CSVs; a file of the user's beside them.
 run_app(0 --set "Adaptivity/Cycles=1")
-expect_files("summary.json;solution.xdmf;solution_c0000.h5;solution_c0001.h5;contact_cycle0.csv;contact_cycle1.csv" "")
+expect_files("summary.json;history.csv;solution.xdmf;solution_c0000.h5;solution_c0001.h5;contact_cycle0.csv;contact_cycle1.csv" "")
 file(WRITE "${OUT}/notes.txt" "mine\n")
 # 2. One cycle without XDMF: only its own summary and CSV remain, and the user's file.
 run_app(0 --set "Adaptivity/Cycles=0" --set "Output/Write XDMF=false")
-expect_files("summary.json;contact_cycle0.csv;notes.txt"
+expect_files("summary.json;history.csv;contact_cycle0.csv;notes.txt"
              "solution.xdmf;solution_c0000.h5;solution_c0001.h5;contact_cycle1.csv")
 # 3. A successful run, then a failing one (Newton stopped after one step): the failed run's
 #    summary says converged: false and stands alone.
 run_app(0 --set "Adaptivity/Cycles=1")
 run_app(2 --set "Adaptivity/Cycles=1" --set "Contact/Newton/Maximum iterations=1")
 expect_files("summary.json;notes.txt"
-             "solution.xdmf;solution_c0000.h5;solution_c0001.h5;contact_cycle0.csv;contact_cycle1.csv")
+             "history.csv;solution.xdmf;solution_c0000.h5;solution_c0001.h5;contact_cycle0.csv;contact_cycle1.csv")
 file(READ "${OUT}/summary.json" summary)
 string(JSON converged GET "${summary}" converged)
 if(converged)

@@ -27,6 +27,7 @@
 #include <sc/contact/Hertz.hpp>
 #include <sc/contact/Obstacle.hpp>
 #include <sc/io/CsvWriter.hpp>
+#include <sc/io/HistoryTable.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/ElementValues.hpp>
@@ -544,6 +545,8 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
   recordCycle(cycle, marking, stopReason);
   recordCost();
   summary_->write();
+  io::writeHistory(*comm_, output_.directory, summary_->json()["cycles"], problem_.dimension,
+                   boundaryConditions_.hasContact());
 }
 
 void Simulation::checkpoint(int cycle, const adapt::Marking& marking)

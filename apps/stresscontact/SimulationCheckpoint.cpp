@@ -25,6 +25,7 @@
 #include <sc/core/Error.hpp>
 #include <sc/io/CheckpointFile.hpp>
 #include <sc/io/Collective.hpp>
+#include <sc/io/HistoryTable.hpp>
 #include <sc/io/ParameterListJson.hpp>
 #include <sc/io/RunSummary.hpp>
 #include <sc/io/XdmfWriter.hpp>
@@ -340,6 +341,10 @@ void Simulation::restoreOutputs()
       steps.push_back({s.at("cycle").get<int>(), s.at("time").get<double>(), s.at("xml").get<std::string>()});
     writer_->restoreSteps(steps);
   }
+  // history.csv holds the restored cycles only (the killed run may have written a row after its
+  // last checkpoint).
+  io::writeHistory(*comm_, output_.directory, summary_->json()["cycles"], problem_.dimension,
+                   boundaryConditions_.hasContact());
   checkpoint_.reset();
 }
 

@@ -140,19 +140,19 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RestartRemovesTheFilesOfLaterCycles)
     for (const char* f : {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
                           "sol_c0003.h5", "sol_c0012.h5", "contact_cycle2.csv", "contact_cycle3.csv",
                           "contact_cycle10.csv", "sol_c0001.h5.tmp.77", "checkpoint.h5.tmp.5",
-                          "notes.txt", "other_c0009.h5"})
+                          "notes.txt", "other_c0009.h5", "history.csv", "history.csv.tmp.8"})
       std::ofstream(dir + "/" + f) << "x";
   comm->barrier();
   const auto removed = sc::io::removeFilesAfterCycle(dir, "sol", 2, *comm);
-  TEST_EQUALITY(removed.size(), 6u);
+  TEST_EQUALITY(removed.size(), 7u);
   if (comm->getRank() != 0)
     return;
   const std::vector<std::string> expected = {"checkpoint.h5.tmp.5", "contact_cycle10.csv",
-                                             "contact_cycle3.csv", "sol_c0001.h5.tmp.77",
-                                             "sol_c0003.h5", "sol_c0012.h5"};
+                                             "contact_cycle3.csv", "history.csv.tmp.8",
+                                             "sol_c0001.h5.tmp.77", "sol_c0003.h5", "sol_c0012.h5"};
   TEST_ASSERT(removed == expected);
   for (const char* f : {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
-                        "contact_cycle2.csv", "notes.txt", "other_c0009.h5"})
+                        "contact_cycle2.csv", "notes.txt", "other_c0009.h5", "history.csv"})
     TEST_ASSERT(std::filesystem::exists(dir + "/" + f));
 }
 

@@ -38,18 +38,21 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RemovesOnlyTheFilesOfAnEarlierRun)
   touch(dir + "/summary.json", R"({"parameters": {"Output": {"Base name": "old"}}})");
   for (const char* f : {"old.xdmf", "old_c0000.h5", "old_c0001.h5", "solution.xdmf",
                         "solution_c0003.h5", "contact_cycle0.csv", "contact_cycle12.csv",
-                        "solution_c0002.h5.tmp.4242", "summary.json.tmp.17"})
+                        "solution_c0002.h5.tmp.4242", "summary.json.tmp.17", "history.csv",
+                        "history.csv.tmp.99"})
     touch(dir + "/" + f);
   // Not ours: kept.
   const std::vector<std::string> kept = {"notes.txt", "mesh.msh", "other.xdmf", "old_c.h5",
-                                         "contact_cycle.csv", "solution_c0001.h5.bak", "my.json"};
+                                         "contact_cycle.csv", "solution_c0001.h5.bak", "my.json",
+                                         "history_old.csv"};
   for (const auto& f : kept)
     touch(dir + "/" + f);
   fs::create_directories(dir + "/contact_cycle3.csv");  // a directory is never removed
 
   const auto removed = sc::io::removeEarlierRunFiles(dir, "solution");
   TEST_COMPARE_ARRAYS(removed, (std::vector<std::string>{
-                                   "contact_cycle0.csv", "contact_cycle12.csv", "old.xdmf",
+                                   "contact_cycle0.csv", "contact_cycle12.csv", "history.csv",
+                                   "history.csv.tmp.99", "old.xdmf",
                                    "old_c0000.h5", "old_c0001.h5", "solution.xdmf",
                                    "solution_c0002.h5.tmp.4242", "solution_c0003.h5",
                                    "summary.json", "summary.json.tmp.17"}));
@@ -100,7 +103,7 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RunFileNamesTakenByDirectoriesAreInputErrors)
   fs::create_directories(dir + "/fields_c.h5");
   TEST_EQUALITY(error(), "");
   sc::io::checkRunFileNamesAreFree(dir + "/missing", "fields");
-  for (const std::string name : {"fields.xdmf", "fields_c0012.h5", "contact_cycle3.csv"}) {
+  for (const std::string name : {"fields.xdmf", "fields_c0012.h5", "contact_cycle3.csv", "history.csv"}) {
     fs::create_directories(dir + "/" + name);
     const std::string e = error();
     out << e << "\n";

@@ -86,7 +86,7 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
     static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
     return std::regex_replace(text, special, R"(\$&)");
   };
-  std::string alternatives = "summary\\.json|checkpoint\\.h5|contact_cycle[0-9]+\\.csv";
+  std::string alternatives = "summary\\.json|checkpoint\\.h5|history\\.csv|contact_cycle[0-9]+\\.csv";
   for (const auto& b : bases)
     alternatives += "|" + quote(b) + "\\.xdmf|" + quote(b) + "_c[0-9]+\\.h5";
   const std::regex ours("(" + alternatives + ")(\\.tmp\\.[0-9]+)?");
@@ -141,7 +141,7 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
   // A cycle's file (group 1: its cycle, group 2: a temporary suffix), or another temporary.
   const std::regex fields(quote(baseName) + "_c([0-9]+)\\.h5(\\.tmp\\.[0-9]+)?");
   const std::regex csv("contact_cycle([0-9]+)\\.csv(\\.tmp\\.[0-9]+)?");
-  const std::regex temporary("(summary\\.json|checkpoint\\.h5|" + quote(baseName) +
+  const std::regex temporary("(summary\\.json|checkpoint\\.h5|history\\.csv|" + quote(baseName) +
                              "\\.xdmf)\\.tmp\\.[0-9]+");
   std::vector<std::string> removed;
   std::error_code ec;
@@ -215,8 +215,8 @@ void checkRunFileNamesAreFree(const std::string& directory, const std::string& b
     return;
   static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
   const std::string base = std::regex_replace(baseName, special, R"(\$&)");
-  const std::regex ours("summary\\.json|checkpoint\\.h5|contact_cycle[0-9]+\\.csv|" + base +
-                        "\\.xdmf|" + base + "_c[0-9]+\\.h5");
+  const std::regex ours("summary\\.json|checkpoint\\.h5|history\\.csv|contact_cycle[0-9]+\\.csv|" +
+                        base + "\\.xdmf|" + base + "_c[0-9]+\\.h5");
   std::vector<fs::path> found;
   for (const auto& entry : fs::directory_iterator(directory, ec)) {
     if (!std::regex_match(entry.path().filename().string(), ours))

@@ -18,7 +18,7 @@ void createOutputDirectory(const std::string& directory);
 void createOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm);
 
 /// A run owns its output directory (docs/output.md "An earlier run's files"): remove from
-/// \p directory the files that a StressContact run writes there: summary.json,
+/// \p directory the files that a StressContact run writes there: summary.json, history.csv,
 /// `<base>.xdmf`, `<base>_c<NNNN>.h5`, contact_cycle<N>.csv, checkpoint.h5 and leftover
 /// `<one of these>.tmp.<pid>`,
 /// for \p baseName and for the Output/Base name recorded in an earlier summary.json. Other files
@@ -35,7 +35,8 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
 /// `--restart` (docs/adaptivity.md): the restarted run continues the files of the run it
 /// restarts, whose last complete cycle is \p lastCycle. Remove what that run wrote after it (the
 /// `<base>_c<NNNN>.h5` and contact_cycle<N>.csv of cycles N > lastCycle, written by a cycle that
-/// was killed) and every leftover temporary `<one of the run's files>.tmp.<pid>`; keep the rest.
+/// was killed) and every leftover temporary `<one of the run's files>.tmp.<pid>`; keep the rest
+/// (summary.json and history.csv are rewritten from the checkpoint's records).
 /// Returns the names removed (sorted); throws sc::core::InputError if one cannot be removed.
 std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
                                                const std::string& baseName, int lastCycle);
@@ -53,7 +54,7 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
 void checkRoomForFile(const std::string& directory, const std::string& path,
                       unsigned long long bytes);
 
-/// Is anything in the way of the files a run writes in \p directory (summary.json,
+/// Is anything in the way of the files a run writes in \p directory (summary.json, history.csv,
 /// checkpoint.h5, `<base>.xdmf`, `<base>_c<NNNN>.h5`, contact_cycle<N>.csv)? An entry with one of
 /// these names that is a directory, device, pipe or socket cannot be replaced by the file (the
 /// rename fails after the file was written) and cannot be read as an earlier run's summary.
