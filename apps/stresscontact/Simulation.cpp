@@ -47,6 +47,7 @@
 #include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
+#include "ContactFields.hpp"
 #include "DeckParameters.hpp"
 #include "ForceBalance.hpp"
 
@@ -850,7 +851,10 @@ void Simulation::writeFields(int cycle)
     names[static_cast<int>(i)] = bn[i];
   boundary.setBoundaryNames(names);
 
-  writer_->writeStep(cycle, {domain, boundary});
+  std::vector<io::GridPiece> grids{domain, boundary};
+  if (contactSolver_ && solved_)  // the contact points with their point values (ContactFields.hpp)
+    grids.push_back(contactPointGrid(*contactSolver_, dim, discretization_.degree));
+  writer_->writeStep(cycle, grids);
 }
 
 void Simulation::run()

@@ -20,6 +20,7 @@
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/LinearSolver.hpp>
 
+#include "sc/contact/Bernstein.hpp"
 #include "sc/contact/ContactSummary.hpp"
 #include "sc/contact/Obstacle.hpp"
 
@@ -81,27 +82,6 @@ std::array<double, 3> barycentric(const std::array<const double*, 3>& v, const d
   const double det = a11 * a22 - a12 * a12;
   const double l1 = (b1 * a22 - b2 * a12) / det, l2 = (a11 * b2 - a12 * b1) / det;
   return {1.0 - l1 - l2, l1, l2};
-}
-
-// Multi-indices α (|α| = k) over `nv` barycentric coordinates, in a fixed order.
-std::vector<std::array<int, 3>> bernsteinIndices(int k, int nv)
-{
-  std::vector<std::array<int, 3>> out;
-  for (int a = k; a >= 0; --a)
-    if (nv == 2)
-      out.push_back({a, k - a, 0});
-    else
-      for (int b = k - a; b >= 0; --b)
-        out.push_back({a, b, k - a - b});
-  return out;
-}
-
-double bernstein(const std::array<int, 3>& alpha, const std::array<double, 3>& lambda, int k)
-{
-  double f = std::tgamma(k + 1.0);
-  for (int i = 0; i < 3; ++i)
-    f *= std::pow(lambda[i], alpha[i]) / std::tgamma(alpha[i] + 1.0);
-  return f;
 }
 
 // Inverse of the small Bernstein collocation matrix (row-major), by LAPACK through Teuchos.

@@ -124,6 +124,9 @@ public:
   void setContactHoldsBody(bool holds) { holdsBody_ = holds; }
 
   const std::vector<ContactPoint>& points() const { return points_; }
+  /// True if the points' coefficients are Bernstein coefficients of each face's traction
+  /// (useBernsteinConstraints), false if they are its values at the face's DOF points.
+  bool bernsteinConstraints() const { return bernstein_; }
   const ContactStatistics& statistics() const { return stats_; }
   long long globalNumPoints() const;
   bool hasFriction() const;

@@ -1,5 +1,9 @@
 #include "sc/contact/ContactPoint.hpp"
 
+#include "sc/contact/Bernstein.hpp"
+
+#include <sc/core/Error.hpp>
+
 #include <cmath>
 
 namespace sc::contact {
@@ -34,6 +38,54 @@ std::vector<double> csvValues(const ContactPoint& p, int dim)
   v.push_back(p.gap - p.rN);  // G − r_N ≥ 0: the weighted gap left open
   v.push_back(dim == 2 ? p.rT[0] : std::hypot(p.rT[0], p.rT[1]));
   return v;
+}
+
+std::vector<PointValues> pointValues(const std::vector<ContactPoint>& points, int dim, int degree,
+                                     bool bernsteinCoefficients)
+{
+  std::vector<PointValues> values(points.size());
+  // The points of each face (its block in the solver), by their index within the face.
+  std::map<int, std::vector<std::size_t>> faces;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    auto& f = faces[points[i].block];
+    const auto index = static_cast<std::size_t>(points[i].index);
+    if (f.size() <= index)
+      f.resize(index + 1, points.size());
+    f[index] = i;
+  }
+  const auto alphas = bernsteinCoefficients ? bernsteinIndices(degree, dim) : std::vector<std::array<int, 3>>();
+  for (const auto& [block, members] : faces) {
+    SC_THROW_IF(bernsteinCoefficients && members.size() != alphas.size(), core::InternalError,
+                "contact::pointValues: face block " << block << " has " << members.size()
+                                                    << " points, its degree " << degree << " needs "
+                                                    << alphas.size());
+    for (std::size_t p = 0; p < members.size(); ++p) {
+      SC_THROW_IF(members[p] == points.size(), core::InternalError,
+                  "contact::pointValues: point " << p << " of face block " << block << " is missing");
+      const ContactPoint& cp = points[members[p]];
+      PointValues& v = values[members[p]];
+      if (!bernsteinCoefficients) {
+        v.pressure = -cp.sigmaN;
+        v.sigmaT = cp.sigmaT;
+      } else {
+        std::array<double, 3> lambda{};
+        for (int i = 0; i < 3; ++i)
+          lambda[i] = alphas[p][i] / static_cast<double>(degree);
+        double sigmaN = 0.0;
+        for (std::size_t q = 0; q < members.size(); ++q) {
+          const double b = bernstein(alphas[q], lambda, degree);
+          const ContactPoint& cq = points[members[q]];
+          sigmaN += b * cq.sigmaN;
+          v.sigmaT[0] += b * cq.sigmaT[0];
+          v.sigmaT[1] += b * cq.sigmaT[1];
+        }
+        v.pressure = -sigmaN;
+      }
+      v.gap = (cp.gap - cp.rN) / cp.weight;
+      v.slip = {cp.rT[0] / cp.weight, cp.rT[1] / cp.weight};
+    }
+  }
+  return values;
 }
 
 std::map<int, FaceTraction> faceMeans(const std::vector<ContactPoint>& points)

@@ -2,7 +2,7 @@
 // Contact points: the constraints of the contact solver (built by ActiveSetSolver from the contact
 // faces, evaluated after each Newton step, carried to the next mesh by
 // ActiveSetSolver::transferState) and how they tabulate themselves for the outputs (the contact
-// CSV and the per-face fields of the XDMF output, docs/output.md).
+// CSV, the per-face fields and the contact point grid of the XDMF output, docs/output.md).
 #include <array>
 #include <map>
 #include <string>
@@ -46,6 +46,24 @@ std::vector<std::string> csvColumns(int dim);
 /// weighted_gap = G − r_N ≥ 0 (the weighted gap left open; 0 on active points), weighted_slip =
 /// |r_T| (the weighted tangential displacement).
 std::vector<double> csvValues(const ContactPoint& p, int dim);
+
+/// A contact point's quantities as values at its position, for the XDMF `contact` grid
+/// (docs/output.md "Fields in a run's files").
+struct PointValues {
+  double pressure = 0.0;               ///< −σ_N at the point
+  std::array<double, 2> sigmaT{};      ///< (σ_T·t1, σ_T·t2) at the point (t2 part 0 in 2D)
+  double gap = 0.0;                    ///< (G − r_N)/W: the weighted gap left open per weight
+  std::array<double, 2> slip{};        ///< r_T/W: the weighted tangential displacement per weight
+};
+/// The values of `points` in their order. The traction of a face is Σ_q τ_q V_q with V_q the
+/// Lagrange basis of the face's DOF points (point constraints: τ_q are already the values at
+/// the points) or the Bernstein polynomials B_{α_q} of degree `degree` (bernsteinCoefficients: the
+/// value at a control point, λ = α_p/k, is Σ_q τ_q B_{α_q}(α_p/k), which equals τ_p at the
+/// vertices and at k = 1 everywhere). The weighted quantities are divided by the point's weight
+/// W = ∫_F w_p ds > 0 (a weighted mean over the face, not a point value). Every face of a point in
+/// `points` must have all its points there (a rank holds all points of its faces).
+std::vector<PointValues> pointValues(const std::vector<ContactPoint>& points, int dim, int degree,
+                                     bool bernsteinCoefficients);
 
 /// Mean contact pressure −σ_N and mean first tangential traction σ_T·t1 of the points of a face.
 struct FaceTraction {
