@@ -14,6 +14,8 @@ SC_DEBIAN_PACKAGES=(
   trilinos-all-dev trilinos-dev libptscotch-dev libscotch-dev
   libhdf5-openmpi-dev libmetis-dev libgmsh-dev libmumps-dev libopenblas0-serial libboost-dev nlohmann-json3-dev
   libmuparser-dev
+  # scripts/plot-run.py and its tests plot_run_<deck>, run with /usr/bin/python3
+  python3-matplotlib python3-h5py
 )
 
 sc_log() { printf '[stresscontact setup] %s\n' "$*"; }

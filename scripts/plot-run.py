@@ -56,11 +56,12 @@ def param(summary, *keys, default=None):
 
 
 def plot_eta(summary, plt, out):
+    # η = 0 (a run without load) has no place on the log scale
     cycles = [c for c in summary.get("cycles", [])
-              if isinstance(c.get("eta"), dict) and c["eta"].get("total") is not None
-              and c.get("dofs", {}).get("total")]
+              if isinstance(c.get("eta"), dict) and isinstance(c["eta"].get("total"), (int, float))
+              and c["eta"]["total"] > 0 and c.get("dofs", {}).get("total")]
     if not cycles:
-        print("plot-run: no estimated cycle in summary.json: eta.png skipped")
+        print("plot-run: no estimated cycle with η > 0 in summary.json: eta.png skipped")
         return None
     dofs = [c["dofs"]["total"] for c in cycles]
     fig, ax = plt.subplots(figsize=(7, 5))
@@ -210,8 +211,8 @@ def plot_contact(summary, directory, cycle, plt, out):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
     active = [p for p, s in zip(pos, status) if s in ("stick", "slip")]
-    if active:  # zoom on the zone (the free points extend over the whole contact boundary)
-        span = max(abs(v) for v in active)
+    span = max((abs(v) for v in active), default=0.0)
+    if span > 0:  # zoom on the zone (the free points extend over the whole contact boundary)
         ax2.set_xlim((-1.5 * span if dim == 2 else 0.0), 1.5 * span)
     fig.tight_layout()
     path = os.path.join(out, "contact_traction.png")
