@@ -6,6 +6,10 @@ set -euo pipefail
 SC_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 SC_BUILD_DIR=${SC_BUILD_DIR:-$SC_ROOT/build}
 SC_JOBS=${SC_JOBS:-2}
+# ccache hashes the compiler's arguments, which hold absolute paths: with the source root as base
+# directory they are rewritten as relative ones, so that another clone of the repository (CI's,
+# a second work tree) finds the objects this one compiled.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$SC_ROOT}"
 
 # Debian 12 packages. Debian's Trilinos CMake configuration also needs the Scotch headers.
 SC_DEBIAN_PACKAGES=(
