@@ -198,7 +198,7 @@ void Simulation::setupMesh()
   // scenes' contact boundary; a Gmsh geometry's or a quadratic file's curved parts). Known once
   // the geometry is, which for a Gmsh file is after reading it.
   if (boundaryConditions_.hasContact() &&
-      !mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_).is_null())
+      mesh::MeshFactory::hasCurvedElements(params_->sublist("Mesh"), *refiner_))
     contact::checkCurvedContact(problem_.dimension, discretization_.degree, contact_.frame);
   // How faithful the domain is (a linear file's curved part is its polygon, and stays so).
   if (const auto geometry = refiner_->geometry(); !geometry.is_null() && !geometry->warning().empty()) {

@@ -33,6 +33,10 @@
 #include <string>
 #include <vector>
 
+#include "CsvFields.hpp"
+
+#include <sc/contact/Bernstein.hpp>
+
 namespace {
 
 constexpr double kTolerance = 1e-12;
@@ -60,39 +64,12 @@ bool readDataset(hid_t file, const std::string& path, Dataset& d)
   return ok;
 }
 
-std::vector<std::string> split(const std::string& line)
-{
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ','))
-    out.push_back(cell);
-  if (!line.empty() && line.back() == ',')
-    out.emplace_back();
-  return out;
-}
+using sc::testtools::splitCsvLine;
 
-// Multi-indices of the Bernstein polynomials of degree k on a face with nv vertices, in the order
-// of a face's constraint points (docs/contact.md "Constraint points").
-std::vector<std::array<int, 3>> bernsteinIndices(int k, int nv)
-{
-  std::vector<std::array<int, 3>> out;
-  for (int a = k; a >= 0; --a)
-    if (nv == 2)
-      out.push_back({a, k - a, 0});
-    else
-      for (int b = k - a; b >= 0; --b)
-        out.push_back({a, b, k - a - b});
-  return out;
-}
-
-double bernstein(const std::array<int, 3>& alpha, const std::array<double, 3>& lambda, int k)
-{
-  double f = std::tgamma(k + 1.0);
-  for (int i = 0; i < 3; ++i)
-    f *= std::pow(lambda[i], alpha[i]) / std::tgamma(alpha[i] + 1.0);
-  return f;
-}
+// The Bernstein basis of a face's constraints, the library's own definition (docs/contact.md
+// "Constraint points").
+using sc::contact::bernstein;
+using sc::contact::bernsteinIndices;
 
 struct Check {
   std::string name;
@@ -141,7 +118,7 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "cannot read %s\n", csvPath.c_str());
     return 2;
   }
-  const auto header = split(line);
+  const auto header = splitCsvLine(line);
   std::map<std::string, std::size_t> col;
   for (std::size_t i = 0; i < header.size(); ++i)
     col[header[i]] = i;
@@ -149,7 +126,7 @@ int main(int argc, char** argv)
   std::vector<std::vector<std::string>> rows;
   while (std::getline(csv, line))
     if (!line.empty())
-      rows.push_back(split(line));
+      rows.push_back(splitCsvLine(line));
   const std::size_t n = rows.size();
   auto num = [&](std::size_t r, const std::string& c) { return std::stod(rows[r].at(col.at(c))); };
   std::vector<std::array<double, 3>> x(n);

@@ -18,23 +18,15 @@
 #include <string>
 #include <vector>
 
+#include "CsvFields.hpp"
+
 #include <nlohmann/json.hpp>
 
 using nlohmann::json;
 
 namespace {
 
-std::vector<std::string> split(const std::string& line)
-{
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ','))
-    out.push_back(cell);
-  if (!line.empty() && line.back() == ',')
-    out.emplace_back();
-  return out;
-}
+using sc::testtools::splitCsvLine;
 
 // The JSON pointer of a column, "" for seconds, "?" for an unknown column.
 std::string pointerOf(const std::string& column)
@@ -80,10 +72,10 @@ int main(int argc, char** argv)
   const json& cycles = summary.at("cycles");
   std::string line;
   std::getline(hin, line);
-  const auto header = split(line);
+  const auto header = splitCsvLine(line);
   std::vector<std::vector<std::string>> rows;
   while (std::getline(hin, line))
-    rows.push_back(split(line));
+    rows.push_back(splitCsvLine(line));
   int failures = 0;
   auto fail = [&](const std::string& why) {
     std::printf("FAILED: %s\n", why.c_str());

@@ -465,11 +465,17 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
 
 namespace sc::mesh {
 
+bool MeshFactory::hasCurvedElements(const Teuchos::ParameterList& meshList,
+                                    const BisectionRefiner& refiner)
+{
+  return meshList.get<int>("Geometry order") >= 2 && !refiner.geometry().is_null() &&
+         refiner.projectsBoundary() && !refiner.geometry()->curvedBoundaryNames().empty();
+}
+
 Teuchos::RCP<const CurvedElements> MeshFactory::curvedElements(const Teuchos::ParameterList& meshList,
                                                                const BisectionRefiner& refiner)
 {
-  if (meshList.get<int>("Geometry order") < 2 || refiner.geometry().is_null() || !refiner.projectsBoundary() ||
-      refiner.geometry()->curvedBoundaryNames().empty())
+  if (!hasCurvedElements(meshList, refiner))
     return Teuchos::null;
   return Teuchos::rcp(new CurvedElements(refiner.mesh(), *refiner.geometry()));
 }

@@ -71,6 +71,9 @@ public:
   /// projection.
   static Teuchos::RCP<const CurvedElements> curvedElements(const Teuchos::ParameterList& meshList,
                                                            const BisectionRefiner& refiner);
+  /// Whether curvedElements() gives elements (without making them).
+  static bool hasCurvedElements(const Teuchos::ParameterList& meshList,
+                                const BisectionRefiner& refiner);
 
   /// The geometry of a validated list: a scene's exact geometry, the CadGeometry of a Gmsh
   /// geometry (runs its script), or null for a Gmsh file, whose boundary (MeshBoundaryGeometry)
