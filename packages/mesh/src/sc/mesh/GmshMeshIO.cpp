@@ -43,7 +43,7 @@ int gmshReaderDies(const std::string& path, unsigned timeLimitSeconds)
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0)
-    return 0;  // no child possible: read in this process, as before
+    return 0;  // no child possible: read in this process, unprotected
   if (pid == 0) {
     // The child: default handlers, so that a crash ends it at once (no sanitizer or fuzzer
     // report from a copy of this process), output discarded, no MPI, no exit handlers.
