@@ -9,6 +9,10 @@
 #     declared there, and the test package_includes_declared checks that its sources include
 #     only headers of itself and of its declared packages and their upstream packages.
 #
+#   sc_check_package_links()
+#     After the last package: every StressContact library a package's target links, also through
+#     a target_link_libraries call outside sc_add_package, must be declared in its DEPENDS.
+#
 #   sc_add_test(<name> SOURCES ... | COMMAND ...  [LIBS ...] [MPI_RANKS 1 2 4] [ARGS ...]
 #               [WILL_FAIL] [PASS_REGULAR_EXPRESSION re] [LABELS ...] [TIMEOUT s])
 #     One CTest per rank count, named <name>_np<N>, run through mpiexec (DUNE's dune_add_test).
@@ -71,6 +75,7 @@ function(sc_add_package name)
   endforeach()
   list(REMOVE_DUPLICATES closure)
   set_property(GLOBAL PROPERTY SC_PACKAGE_CLOSURE_${name} ${closure})
+  set_property(GLOBAL PROPERTY SC_PACKAGE_DEPENDS_${name} ${P_DEPENDS})
   set_property(GLOBAL PROPERTY SC_PACKAGE_INCLUDE_NAME_${name} ${P_INCLUDE_NAME})
   set_property(GLOBAL APPEND PROPERTY SC_PACKAGE_SOURCE_DIRS "${name}=${CMAKE_CURRENT_SOURCE_DIR}/src")
   add_library(${tgt} ${P_SOURCES})
@@ -89,6 +94,30 @@ function(sc_add_package name)
   install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/src/sc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
           FILES_MATCHING PATTERN "*.hpp")
   set_property(GLOBAL APPEND PROPERTY SC_PACKAGES ${name})
+endfunction()
+
+function(sc_check_package_links)
+  get_property(packages GLOBAL PROPERTY SC_PACKAGES)
+  set(problems "")
+  foreach(pkg IN LISTS packages)
+    get_property(declared GLOBAL PROPERTY SC_PACKAGE_DEPENDS_${pkg})
+    get_target_property(direct sc_${pkg} LINK_LIBRARIES)
+    get_target_property(iface sc_${pkg} INTERFACE_LINK_LIBRARIES)
+    foreach(lib IN LISTS direct iface)
+      # Plain names, aliases and $<LINK_ONLY:...> wrappers alike.
+      if(lib MATCHES "(^|[:<])(sc_|StressContact::)([a-z_]+)>?$")
+        set(dep ${CMAKE_MATCH_3})
+        if(dep IN_LIST packages AND NOT dep STREQUAL pkg AND NOT dep IN_LIST declared)
+          string(APPEND problems "  package '${pkg}' links '${lib}' (declared: ${declared})\n")
+        endif()
+      endif()
+    endforeach()
+  endforeach()
+  if(problems)
+    message(FATAL_ERROR "packages link StressContact libraries they do not declare in DEPENDS:\n"
+                        "${problems}Declare the package in DEPENDS (packages/<name>/CMakeLists.txt) "
+                        "or do not link it (docs/architecture.md \"Packages and their order\")")
+  endif()
 endfunction()
 
 function(sc_add_test name)
