@@ -2,13 +2,13 @@
 # Mesh/Memory limit (GB) counts all the run's memory, the program's own included (docs/mesh.md
 # "Resource limits"):
 # 1. A limit below what the program holds before any mesh (VmRSS, here about 0.11 GB on 1 rank) is
-#    an input error naming the key, that baseline and a valid value (before: 0.1 GB was accepted
-#    and the run peaked at 0.278 GB).
+#    an input error naming the key, that baseline and a valid value (unchecked, 0.1 GB is accepted
+#    and the run peaks at 0.278 GB).
 # 2. With the limit 0.15 GB above that baseline (read from the message of 1, since it depends on
 #    the build and the machine), the adaptive run stops on memory before a cycle would exceed the
 #    limit, and its peak resident memory (summary.json, all ranks) stays within 5% of the limit
-#    (measured: a peak of 0.250 GB under 0.262 GB, 2026-12-03; before, the forecast counted the
-#    mesh, matrices and solver only, and hertz2d.xml peaked at 0.278 GB under a limit of 0.1 GB).
+#    (measured: a peak of 0.250 GB under 0.262 GB, 2026-12-03; a forecast of the mesh, matrices and solver
+#    alone lets hertz2d.xml peak at 0.278 GB under a limit of 0.1 GB).
 execute_process(COMMAND ${APP} --check ${DECK} --set "Mesh/Memory limit (GB)=0.001"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message("${out}")

@@ -1,7 +1,7 @@
 # cmake -DAPP=stresscontact -DDECK=hertz2d.xml -DOUT=dir -DMPIEXEC=mpiexec -DMPIFLAGS="a|b"
 #       -P OutputLock.cmake
-# One run per output directory (io/OutputLock.hpp; docs/reliability.md, "output"). Before, two
-# runs into one directory both exited 0 and left the summary.json of one beside the CSVs and
+# One run per output directory (io/OutputLock.hpp; docs/reliability.md, "output"). Without the lock,
+# two runs into one directory both exit 0 and leave the summary.json of one beside the CSVs and
 # .h5 of the other.
 #   1. A run leaves no lock behind.
 #   2. A lock held by a live process (this cmake process: the parent of a shell it starts):

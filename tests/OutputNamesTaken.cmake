@@ -3,11 +3,11 @@
 # For each of NAMES: the output directory holds a directory of that name (with a file in it)
 # beside a file of the user's. The run and --check must both exit with status 1 and the message
 # "'OUT/NAME' is a directory, but a run writes its file NAME there", and leave the directory as
-# it was: the same entries, no lock, temporary or summary written (docs/reliability.md). Before,
-# --check said the deck was valid, and the run wrote its files and stopped at the first rename
+# it was: the same entries, no lock, temporary or summary written (docs/reliability.md). Unchecked,
+# --check says the deck is valid, and the run writes its files and stops at the first rename
 # ("Cannot rename '...tmp.<pid>' to '...': Is a directory", a temporary left behind) or, for
 # summary.json, at "basic_filebuf::underflow error reading the file: Is a directory".
-# With FIFO: a named pipe of that name (the run used to wait forever opening it as a summary).
+# With FIFO: a named pipe of that name (unchecked, the run waits forever opening it as a summary).
 string(REPLACE "|" ";" NAMES "${NAMES}")
 
 function(expect_refused name kind)

@@ -5,10 +5,9 @@
 # Runs the deck with E = 1 (the reference) and with E = 1e<k> for every k of EXPONENTS, then
 # checks every cycle of every run against the reference: converged, the same number of cycles,
 # contact force / E within 1e-8 (relative), the same half-width and stick half-width (1e-12),
-# and the same numbers of free, stick and slip points. Before the valid range of
-# 'Material/Young modulus' was narrowed to [1e-100, 1e100], E = 1e-165 on hertz2d.xml (Coulomb
-# friction) gave another stick/slip state and force/E 0.7 % off, and this script failed
-# (docs/reliability.md).
+# and the same numbers of free, stick and slip points. This is why 'Material/Young modulus' is
+# limited to [1e-100, 1e100]: E = 1e-165 on hertz2d.xml (Coulomb friction) gives another
+# stick/slip state and force/E 0.7 % off, and this script fails there (docs/reliability.md).
 foreach(v SETS EXPONENTS)
   string(REPLACE "|" ";" ${v} "${${v}}")
 endforeach()

@@ -140,8 +140,8 @@ TEUCHOS_UNIT_TEST(Convergence, HalfDiscCurvedDegree2) { halfDiscCurved(2, out, s
 // The same half disc drawn by a user in Gmsh (input/geometry/hertz_half_disc.geo, built-in
 // kernel: its own mesh) with Mesh/Source = Gmsh geometry: refinement and the curved elements'
 // midpoints follow the CAD circle (docs/mesh.md "Curved boundaries from files"), so the rates
-// are the scene's: k + 1 (before, a file's arc stayed the polygon of its mesh, which limits
-// k = 2 to about 1.5 as for HalfDiscStraightDegree2IsGeometryLimited).
+// are the scene's: k + 1 (the polygon of the file's mesh would limit k = 2 to about 1.5, as
+// HalfDiscStraightDegree2IsGeometryLimited shows).
 TEUCHOS_UNIT_TEST(Convergence, HalfDiscFromGeoDegree1) { halfDiscCurved(1, out, success, SC_HALF_DISC_GEO); }
 TEUCHOS_UNIT_TEST(Convergence, HalfDiscFromGeoDegree2) { halfDiscCurved(2, out, success, SC_HALF_DISC_GEO); }
 // The straight-sided mesh at k = 2: the geometry error limits the stress rate; the curved

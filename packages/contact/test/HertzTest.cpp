@@ -637,7 +637,7 @@ TEUCHOS_UNIT_TEST(Contact, SupportedDegrees)
 }
 
 // The obstacle's normal must point towards the body; the opposite is an input error (the design
-// notes' (docs/theory.md §"Contact and friction") sign trap: it used to "converge" with nothing in
+// notes' (docs/theory.md §"Contact and friction") sign trap: unchecked, it "converges" with nothing in
 // contact and a zero load). A deep overlap too.
 TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
 {
@@ -658,7 +658,8 @@ TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
   cs.obstaclePoint = {0.0, 0.5};  // half the body inside the plane
   TEST_THROW(sc::contact::checkObstacle(*m, cs, {"Arc"}), sc::core::InputError);
   // A plane through the middle of the body with the normal away from most of it is named as such
-  // (it used to advise "the opposite vector", which cuts the body too: the deep overlap above).
+  // (advising "the opposite vector" would be wrong: that plane cuts the body too, the deep overlap
+  // above).
   for (double ny : {-1.0}) {
     cs.obstacleNormal = {0.0, ny};
     try {

@@ -149,9 +149,9 @@ TEUCHOS_UNIT_TEST(GmshFile, NonFiniteCoordinatesNameTheNode)
 
 TEUCHOS_UNIT_TEST(GmshFile, FileThatCrashesGmshIsAnInputError)
 {
-  // Found by fuzz_gmsh (docs/reliability.md "Fuzzing"): half_disc_h0.25_v41.msh with damaged
+  // From fuzz_gmsh (docs/reliability.md "Fuzzing"): half_disc_h0.25_v41.msh with damaged
   // $Nodes lines. Gmsh 4.8's MSH4 reader reads out of bounds on it (SEGV in
-  // GModel::getMeshVertexByTag): before, the whole program died of a segmentation fault.
+  // GModel::getMeshVertexByTag): read in-process, the whole program dies of it.
   expectInputError([] { GmshMeshIO::readFile(dataDir + "/fuzz_msh4_damaged_nodes.msh", 2); },
                    {"fuzz_msh4_damaged_nodes.msh", "Gmsh's reader crashed on it (signal 11"},
                    success, out);
@@ -249,9 +249,9 @@ TEUCHOS_UNIT_TEST(GmshFile, NonRegularFilesAreRefused)
   std::filesystem::remove(fifo);
 }
 
-// Gmsh keeps one group per name: two groups named 'Top' used to become the part 'Top' and a part
-// called by the other's number, traction-free; a group without a name (called '3') and a group
-// named '3' used to merge into one part.
+// Gmsh keeps one group per name: unchecked, two groups named 'Top' become the part 'Top' and a
+// part called by the other's number, traction-free; a group without a name (called '3') and a
+// group named '3' merge into one part.
 TEUCHOS_UNIT_TEST(GmshFile, ClashingPhysicalNamesAreInputErrors)
 {
   const std::string nodes = "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n";
