@@ -63,6 +63,83 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
 
 namespace {
 
+// The affine function of the position on a face (an edge in 2D, a triangle in 3D) that fits the
+// values v[q] (d components) at the points c[q] in the least-squares sense, evaluated at x. The
+// face's coordinates are orthonormal directions spanned by the points; with fewer points than
+// the face needs for an affine fit (or degenerate ones), the mean value.
+std::array<double, 3> fitAffineOnFace(const std::vector<const double*>& c,
+                                      const std::vector<const double*>& v, int d, const double* x)
+{
+  const std::size_t m = c.size();
+  std::array<double, 3> mean{0, 0, 0}, cbar{0, 0, 0};
+  for (std::size_t q = 0; q < m; ++q)
+    for (int i = 0; i < d; ++i) {
+      mean[i] += v[q][i] / m;
+      cbar[i] += c[q][i] / m;
+    }
+  // Orthonormal directions e[0..d-2] from the points (Gram–Schmidt on c[q] − c[0]).
+  std::vector<std::array<double, 3>> e;
+  double scale = 0.0;
+  for (std::size_t q = 1; q < m; ++q)
+    for (int i = 0; i < d; ++i)
+      scale = std::max(scale, std::abs(c[q][i] - c[0][i]));
+  for (std::size_t q = 1; q < m && static_cast<int>(e.size()) < d - 1; ++q) {
+    std::array<double, 3> a{0, 0, 0};
+    for (int i = 0; i < d; ++i)
+      a[i] = c[q][i] - c[0][i];
+    for (const auto& b : e) {
+      const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      for (int i = 0; i < 3; ++i)
+        a[i] -= ab * b[i];
+    }
+    const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (norm <= 1e-8 * scale)
+      continue;
+    for (double& ai : a)
+      ai /= norm;
+    e.push_back(a);
+  }
+  if (scale == 0.0 || static_cast<int>(e.size()) < d - 1)
+    return mean;
+  // Normal equations in the face coordinates s = E (x − c̄): (Σ s sᵀ) g_i = Σ s (v_i − v̄_i).
+  const int k = d - 1;
+  auto coords = [&](const double* y) {
+    std::array<double, 2> s{0, 0};
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < d; ++i)
+        s[j] += e[j][i] * (y[i] - cbar[i]);
+    return s;
+  };
+  double S[2][2] = {{0, 0}, {0, 0}}, rhs[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  for (std::size_t q = 0; q < m; ++q) {
+    const auto s = coords(c[q]);
+    for (int a = 0; a < k; ++a) {
+      for (int b = 0; b < k; ++b)
+        S[a][b] += s[a] * s[b];
+      for (int i = 0; i < d; ++i)
+        rhs[i][a] += s[a] * (v[q][i] - mean[i]);
+    }
+  }
+  const auto sx = coords(x);
+  std::array<double, 3> out = mean;
+  if (k == 1) {
+    if (S[0][0] <= 0.0)
+      return mean;
+    for (int i = 0; i < d; ++i)
+      out[i] += sx[0] * rhs[i][0] / S[0][0];
+    return out;
+  }
+  const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
+  if (std::abs(det) <= 1e-12 * (S[0][0] * S[1][1]))
+    return mean;
+  for (int i = 0; i < d; ++i) {
+    const double g0 = (S[1][1] * rhs[i][0] - S[0][1] * rhs[i][1]) / det;
+    const double g1 = (S[0][0] * rhs[i][1] - S[1][0] * rhs[i][0]) / det;
+    out[i] += g0 * sx[0] + g1 * sx[1];
+  }
+  return out;
+}
+
 // Barycentric coordinates of y in the face with vertices v[0..d-1] (an edge or a triangle).
 std::array<double, 3> barycentric(const std::array<const double*, 3>& v, const double* y, int d)
 {
@@ -295,7 +372,11 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
           // outward normal (body frame, straight faces only).
           p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), p.n.data(), cap) * w;
           p.weight += fv.weight(q) * w;
+          for (int i = 0; i < d; ++i)
+            p.centroid[i] += fv.weight(q) * w * fv.point(q)[i];
         }
+        for (int i = 0; i < d; ++i)
+          p.centroid[i] /= p.weight;
         minRelativeWeight = std::min(minRelativeWeight, p.weight / area);
         points_.push_back(p);
       }
@@ -330,11 +411,13 @@ long long ActiveSetSolver::globalNumPoints() const
 void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
                                     const std::vector<int>& parentFace)
 {
-  // Every rank's previous points, as (parent face, index in its face, x, status, direction):
-  // the partition changes between cycles, so a new face's parent may have lived on any rank.
-  // The list is O(contact points), like the replicated mesh.
+  // Every rank's previous points, as (parent face, index in its face, x, status, direction,
+  // centroid, load-step history per weight): the partition changes between cycles, so a new
+  // face's parent may have lived on any rank. The list is O(contact points), like the
+  // replicated mesh.
   const int d = space_.dim();
-  const int stride = d + 5;
+  const int stride = 3 * d + 5;
+  const int centroidAt = d + 5, historyAt = 2 * d + 5;
   std::vector<double> mine;
   mine.reserve(previous.size() * stride);
   for (const auto& q : previous) {
@@ -344,6 +427,9 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
     mine.push_back(static_cast<double>(q.status));
     mine.push_back(q.direction[0]);
     mine.push_back(q.direction[1]);
+    mine.insert(mine.end(), q.centroid.begin(), q.centroid.begin() + d);
+    for (int i = 0; i < d; ++i)
+      mine.push_back(q.history[i] / q.weight);
   }
   const auto all = gatherAllVariable(mine, *comm_);
   const std::size_t n = all.size() / stride;
@@ -408,6 +494,35 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
     }
     p.status = static_cast<PointStatus>(static_cast<int>(all[chosen * stride + 2 + d]));
     p.direction = {all[chosen * stride + 3 + d], all[chosen * stride + 4 + d]};
+    // The load-step history: the parent face's per-weight values, placed at their weights'
+    // centroids, fitted by an affine function of the position on the face (least squares) and
+    // evaluated at this point's centroid, times its weight. Exact for a tangential trace that is
+    // affine on the parent face, so the transfer costs O(h²) and repeated refinement of one
+    // face reproduces the same affine function (docs/theory.md §"Load steps").
+    std::vector<const double*> cq, vq;
+    bool any = false;
+    for (auto it = range.first; it != range.second; ++it) {
+      cq.push_back(&all[it->second * stride + centroidAt]);
+      vq.push_back(&all[it->second * stride + historyAt]);
+      for (int i = 0; i < d; ++i)
+        any = any || vq.back()[i] != 0.0;
+    }
+    p.history = {0.0, 0.0, 0.0};
+    if (any) {
+      // An unrefined face keeps its points: their values are taken as they are.
+      const double* same = nullptr;
+      for (std::size_t q = 0; q < cq.size() && !same; ++q) {
+        double d2 = 0.0;
+        for (int i = 0; i < d; ++i)
+          d2 += (cq[q][i] - p.centroid[i]) * (cq[q][i] - p.centroid[i]);
+        if (d2 <= 1e-20 * far)
+          same = vq[q];
+      }
+      const auto v = same ? std::array<double, 3>{same[0], same[1], d == 3 ? same[2] : 0.0}
+                          : fitAffineOnFace(cq, vq, d, p.centroid.data());
+      for (int i = 0; i < d; ++i)
+        p.history[i] = p.weight * v[i];
+    }
   }
 }
 
@@ -468,7 +583,10 @@ int ActiveSetSolver::updateState(bool flipToStick)
         // Hüeber–Stadler–Wohlmuth bound: the augmented normal stress, not the old σ_N (which
         // is 0 for a newly active point).
         const double bound = tresca ? trescaBound(p) : mu * std::max(0.0, -aug);
-        double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]}, norm = 0.0;
+        // Load steps: the slip increment r_T − r_T^{n−1} (zero history in the first step).
+        const auto r0 = p.previousRT();
+        double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]), p.sigmaT[1] - p.c * (p.rT[1] - r0[1])},
+               norm = 0.0;
         for (int k = 0; k < nt; ++k)
           norm += z[k] * z[k];
         norm = std::sqrt(norm);
@@ -567,8 +685,9 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
       const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
       double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
       bool hswRow = false;
+      const auto r0 = p.previousRT();  // r_T^{n−1} of load steps (zero in the first step)
       if (hsw) {
-        const double z[2] = {p.sigmaT[0] - p.c * p.rT[0], p.sigmaT[1] - p.c * p.rT[1]};
+        const double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]), p.sigmaT[1] - p.c * (p.rT[1] - r0[1])};
         const double zn = std::hypot(z[0], z[1]);
         const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
         if (zn > 0.0 && bound > 0.0) {
@@ -581,6 +700,9 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
               hswM[j][l] = (st[j] * p.direction[l] - (j == l ? bound : 0.0)) / zn;
             hswRhs[j] = st[j] - bound * p.direction[j] - mu * p.c * p.direction[j] * p.gap;
           }
+          // z depends on r_T through r_T − r_T^{n−1}: −c M (r_T − r_T^{n−1}) on the left.
+          for (int j = 0; j < 2; ++j)
+            hswRhs[j] -= p.c * (hswM[j][0] * r0[0] + hswM[j][1] * r0[1]);
         }
       }
       for (int r = 0; r < d; ++r) {
@@ -605,7 +727,8 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
             }
             gamma = hswRhs[k];
           } else if (p.status == PointStatus::Stick) {
-            alpha = dir;  // r_T = 0
+            alpha = dir;  // r_T = r_T^{n−1}: no slip increment (0 in the first load step)
+            gamma = r0[k];
           } else if (p.status == PointStatus::Slip && friction) {
             if (tresca) {
               beta = dir;  // σ_T,k = s ξ_k

@@ -18,6 +18,23 @@ std::string toString(PointStatus s)
   return "?";
 }
 
+std::array<double, 2> ContactPoint::previousRT() const
+{
+  double a = 0.0, b = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    a += history[i] * t1[i];
+    b += history[i] * t2[i];
+  }
+  return {a, b};
+}
+
+void commitLoadStep(std::vector<ContactPoint>& points)
+{
+  for (auto& p : points)
+    for (int i = 0; i < 3; ++i)
+      p.history[i] = p.rT[0] * p.t1[i] + p.rT[1] * p.t2[i];
+}
+
 std::vector<std::string> csvColumns(int dim)
 {
   std::vector<std::string> columns = {"x", "y"};

@@ -37,7 +37,20 @@ struct ContactPoint {
   double sigmaNAtDofPoint = 0.0;
   double frictionBound = 0.0;  ///< s_p of the Coulomb fixed point (a Tresca bound per point)
   std::array<double, 2> sigmaT{}, rT{};
+  // Load steps (docs/theory.md §"Load steps"): friction acts on the slip increment.
+  /// The weight's centroid ∫_F x w_p ds / W (where the per-weight history is placed when it is
+  /// carried to a refined face).
+  std::array<double, 3> centroid{};
+  /// r_T of the end of the previous load step, as a vector in global coordinates (the weighted
+  /// tangential displacement trace ∫_F ũ_T^{n−1} w_p ds); zero in the first step.
+  std::array<double, 3> history{};
+  /// `history` in this point's tangential frame (t1, t2): what r_T is compared with.
+  std::array<double, 2> previousRT() const;
 };
+
+/// End of a load step: every point's history becomes its current r_T (in global coordinates),
+/// so that the next step's friction acts on the increment r_T − r_T^{n−1}.
+void commitLoadStep(std::vector<ContactPoint>& points);
 
 /// The columns of the contact CSV (docs/output.md): x, y[, z], sigma_n, sigma_t[, sigma_t2],
 /// weighted_gap, weighted_slip, status.

@@ -1,0 +1,219 @@
+// Load steps in the contact solver (docs/theory.md §"Load steps"): friction acts on the slip
+// increment r_T − r_T^{n−1}, and the history r_T^{n−1} is carried through refinement. At 1, 2 and
+// 4 ranks, on a coarse Hertz half disc with Coulomb friction (μ_F = 0.4, docs/contact.md).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+#include <Teuchos_UnitTestHarness.hpp>
+
+#include <sc/assembly/MixedElasticitySystem.hpp>
+#include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/ContactSummary.hpp>
+#include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/BisectionRefiner.hpp>
+#include <sc/mesh/MeshFactory.hpp>
+#include <sc/mesh/RefinementTransfer.hpp>
+#include <sc/mesh/SimplexMesh.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+namespace {
+
+using sc::contact::ContactPoint;
+using sc::contact::PointStatus;
+
+struct Scene {
+  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
+  Teuchos::RCP<sc::mesh::BisectionRefiner> refiner;
+  sc::core::Material material{20600.0, 0.28};
+  sc::contact::ContactSettings cs;
+
+  explicit Scene(int levels)
+  {
+    Teuchos::ParameterList meshList;
+    meshList.set("Source", std::string("Half disc"));
+    meshList.set("Initial mesh size", 0.2);
+    refiner = sc::mesh::MeshFactory::build(meshList, 2, *comm);
+    Teuchos::ParameterList local;
+    local.set("Levels", levels);
+    local.set("Center", Teuchos::Array<double>(2, 0.0));
+    local.set("Radius", 0.25);
+    local.set("Boundary", std::string());
+    sc::mesh::MeshFactory::refineLocally(*refiner, local);
+    refiner->forgetHistory();
+    cs.obstaclePoint = {0.0, 0.0};
+    cs.obstacleNormal = {0.0, 1.0};
+    cs.frictionLaw = sc::contact::FrictionLaw::Coulomb;
+    cs.frictionCoefficient = 0.4;
+  }
+
+  struct Result {
+    std::vector<ContactPoint> points;
+    std::vector<double> x;
+    sc::contact::ContactStatistics stats;
+    sc::contact::ContactSummary summary;
+  };
+
+  // One load step on the current mesh with the top displaced by `top`, starting from `previous`
+  // through `parents` (none: the first step, all points free). solve = false: only the
+  // constructed points (after the transfer).
+  Result step(int degree, std::array<double, 2> top, const std::vector<ContactPoint>* previous,
+              const std::vector<int>* parents, bool solve = true) const
+  {
+    sc::assembly::MixedElasticitySystem system(refiner->mesh(), degree, comm);
+    sc::core::BoundaryConditions bcs;
+    bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, {top[0], top[1]}, false});
+    bcs.conditions.push_back({"Arc", sc::core::BoundaryType::Contact, {}, false});
+    system.assemble({material, bcs, nullptr});
+    Teuchos::ParameterList newton;
+    sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, newton, comm);
+    if (previous)
+      contact.transferState(*previous, *parents);
+    Result r;
+    if (!solve) {
+      r.points = contact.points();
+      return r;
+    }
+    Teuchos::ParameterList solverList;
+    solverList.set("Type", std::string("MUMPS"));
+    auto solver = sc::solvers::createLinearSolver(solverList);
+    system.prepareSolver(*solver);
+    const auto& assembler = system.assembler();
+    auto x = assembler.createVector();
+    contact.solve(*assembler.matrix(), *assembler.rhs(), *solver, *x);
+    r.points = contact.points();
+    r.stats = contact.statistics();
+    r.summary = sc::contact::summarizeContact(r.points, 2, cs.obstacleNormal, *comm);
+    auto xv = x->getData(0);
+    r.x.assign(xv.begin(), xv.end());
+    return r;
+  }
+
+  // Every boundary face its own parent: the next load step on the same mesh.
+  std::vector<int> identityParents() const
+  {
+    const auto& m = *refiner->mesh();
+    std::vector<int> parents(m.numFaces(), -1);
+    for (int f : m.boundaryFaces())
+      parents[f] = f;
+    return parents;
+  }
+};
+
+double maxAbs(const std::vector<double>& v, const Teuchos::Comm<int>& comm)
+{
+  double local = 0.0, global = 0.0;
+  for (double a : v)
+    local = std::max(local, std::abs(a));
+  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, 1, &local, &global);
+  return global;
+}
+
+}  // namespace
+
+// A second load step with the same load: the state of the first step solves it (every contact
+// point keeps r_T = r_T^{n−1}, the tractions stay in the cone), and the incremental problem has
+// one solution, so the second step must return the first step's solution with no slip increment
+// (analytic). One step from the unloaded state has zero history: it is the static problem.
+TEUCHOS_UNIT_TEST(LoadSteps, SameLoadAgainHasNoSlipIncrement)
+{
+  Scene scene(4);
+  const std::array<double, 2> top{0.0, -0.01};
+  const auto s1 = scene.step(1, top, nullptr, nullptr);
+  TEST_ASSERT(s1.stats.converged);
+  TEST_COMPARE(s1.summary.numSlip, >, 0);  // the check below is not vacuous
+  for (const auto& p : s1.points)
+    TEST_ASSERT(p.history == (std::array<double, 3>{0.0, 0.0, 0.0}));
+  auto committed = s1.points;
+  sc::contact::commitLoadStep(committed);
+  const auto parents = scene.identityParents();
+  const auto s2 = scene.step(1, top, &committed, &parents);
+  TEST_ASSERT(s2.stats.converged);
+  out << "step 2: " << s2.stats.newtonIterations << " Newton steps\n";
+  std::vector<double> diff(s1.x.size());
+  for (std::size_t i = 0; i < diff.size(); ++i)
+    diff[i] = s2.x[i] - s1.x[i];
+  const double scale = maxAbs(s1.x, *scene.comm);
+  TEST_COMPARE(maxAbs(diff, *scene.comm), <=, 1e-8 * scale);
+  double slip = 0.0, rT = 0.0;
+  for (const auto& p : s2.points) {
+    if (p.status == PointStatus::Free)
+      continue;
+    const auto r0 = p.previousRT();
+    slip = std::max(slip, std::abs(p.rT[0] - r0[0]));
+    rT = std::max(rT, std::abs(r0[0]));
+  }
+  // Over all ranks (a rank may hold no active point).
+  const double local[2] = {slip, rT};
+  double global[2] = {0.0, 0.0};
+  Teuchos::reduceAll<int, double>(*scene.comm, Teuchos::REDUCE_MAX, 2, local, global);
+  slip = global[0];
+  rT = global[1];
+  out << "max |r_T - r_T^{n-1}| = " << slip << " against max |r_T^{n-1}| = " << rT << "\n";
+  TEST_COMPARE(rT, >, 0.0);
+  TEST_COMPARE(slip, <=, 1e-8 * rT);
+}
+
+// The history's transfer to a refined mesh is exact for a tangential trace that is affine on each
+// parent face (docs/theory.md §"Load steps"): a history set to W_p·(a + B x) at the weights'
+// centroids is carried to the children with their own weights, as the affine function of the
+// position along the parent face (the projection onto its line: new vertices lie on the arc),
+// at k = 1 and 2, for refined and unrefined faces (manufactured).
+TEUCHOS_UNIT_TEST(LoadSteps, HistoryTransferIsExactForAffineTraces)
+{
+  for (int degree : {1, 2}) {
+    Scene scene(3);
+    auto affine = [](const std::array<double, 3>& x) {
+      return std::array<double, 3>{0.3 + 2.0 * x[0] - 1.5 * x[1], -0.7 + 0.5 * x[0] + 3.0 * x[1], 0.0};
+    };
+    auto before = scene.step(degree, {0.0, -0.01}, nullptr, nullptr, false).points;
+    for (auto& p : before) {
+      const auto v = affine(p.centroid);
+      for (int i = 0; i < 2; ++i)
+        p.history[i] = p.weight * v[i];
+    }
+    const auto m0 = scene.refiner->mesh();
+    const int arc = m0->boundaryId("Arc");
+    std::vector<int> marked;
+    for (int f : m0->boundaryFaces()) {
+      const int* v = m0->faceVertices(f);
+      if (m0->faceBoundaryId(f) == arc && 0.5 * (m0->vertex(v[0])[0] + m0->vertex(v[1])[0]) < 0.1)
+        marked.push_back(m0->faceElements(f)[0]);
+    }
+    const auto& refinement = scene.refiner->refine(marked);
+    const auto parents = sc::mesh::boundaryFaceParents(*m0, *scene.refiner->mesh(), refinement);
+    scene.refiner->forgetHistory();
+    const auto after = scene.step(degree, {0.0, -0.01}, &before, &parents, false).points;
+    double worst = 0.0, size = 0.0;
+    long long checked = 0;
+    for (const auto& p : after) {
+      if (parents[p.face] < 0)
+        continue;
+      ++checked;
+      // New boundary vertices lie on the arc, off the parent's chord: the history is a function
+      // of the position along the parent face, i.e. of the projection onto its line.
+      const int* pv = m0->faceVertices(parents[p.face]);
+      const double* a = m0->vertex(pv[0]);
+      const double* b = m0->vertex(pv[1]);
+      const double e[2] = {b[0] - a[0], b[1] - a[1]};
+      const double t = ((p.centroid[0] - a[0]) * e[0] + (p.centroid[1] - a[1]) * e[1]) /
+                       (e[0] * e[0] + e[1] * e[1]);
+      const auto v = affine({a[0] + t * e[0], a[1] + t * e[1], 0.0});
+      for (int i = 0; i < 2; ++i) {
+        worst = std::max(worst, std::abs(p.history[i] / p.weight - v[i]));
+        size = std::max(size, std::abs(v[i]));
+      }
+    }
+    long long total = 0;
+    Teuchos::reduceAll<int, long long>(*scene.comm, Teuchos::REDUCE_SUM, 1, &checked, &total);
+    double globalWorst = 0.0;
+    Teuchos::reduceAll<int, double>(*scene.comm, Teuchos::REDUCE_MAX, 1, &worst, &globalWorst);
+    out << "k = " << degree << ": " << total << " points, max error " << globalWorst << "\n";
+    TEST_COMPARE(total, >, 0);
+    TEST_COMPARE(globalWorst, <=, 1e-11 * std::max(size, 1.0));
+  }
+}
