@@ -9,8 +9,10 @@ namespace sc::contact {
 namespace {
 
 // Half-width / radius of the set `in` among all points: midpoint between the outermost point
-// inside and the nearest point outside beyond it (on each side in 2D).
-double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool signedCoordinate)
+// inside and the nearest point outside beyond it (on each side in 2D). `ends` (2D): the two
+// ends so found, in the signed coordinate.
+double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool signedCoordinate,
+                std::array<double, 2>* ends = nullptr)
 {
   double maxIn = -1e300, minIn = 1e300;
   bool any = false;
@@ -34,6 +36,8 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
   if (!signedCoordinate)
     return right;
   const double left = prevOut > -1e299 ? 0.5 * (minIn + prevOut) : minIn;
+  if (ends)
+    *ends = {left, right};
   return 0.5 * (right - left);
 }
 
@@ -145,7 +149,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     stick.push_back(all[i + 1] == 1.0);
   }
   out.zoneSize = zoneSize(s, active, dim == 2);
-  out.stickZoneSize = zoneSize(s, stick, dim == 2);
+  out.stickZoneSize = zoneSize(s, stick, dim == 2, dim == 2 ? &out.stickZoneEnds : nullptr);
   return out;
 }
 
