@@ -15,7 +15,7 @@ namespace sc::core {
 namespace {
 
 const char* const kWhatIsValid =
-    "variables x, y, z (z = 0 in 2D), the constant pi, functions such as sin, cos, tan, sqrt, "
+    "variables x, y, z (z = 0 in 2D) and t (the load step's time), the constant pi, functions such as sin, cos, tan, sqrt, "
     "exp, ln, log10, abs, sign, operators + - * / ^, comparisons and a ? b : c; no commas";
 
 bool isIdentifier(const std::string& token)
@@ -38,9 +38,16 @@ std::string pointText(const double* x, int dim)
 
 }  // namespace
 
+namespace {
+double g_loadTime = 1.0;  // Expression::setLoadTime
+}  // namespace
+
+void Expression::setLoadTime(double t) { g_loadTime = t; }
+double Expression::loadTime() { return g_loadTime; }
+
 struct Expression::Impl {
   std::string formula, key;
-  double x = 0.0, y = 0.0, z = 0.0;  // the parser reads the point from here
+  double x = 0.0, y = 0.0, z = 0.0, t = 1.0;  // the parser reads the point and time from here
   mu::Parser parser;
 };
 
@@ -57,6 +64,7 @@ Expression::Expression(const std::string& formula, const std::string& key)
     I.parser.DefineVar("x", &I.x);
     I.parser.DefineVar("y", &I.y);
     I.parser.DefineVar("z", &I.z);
+    I.parser.DefineVar("t", &I.t);
     I.parser.SetExpr(formula);
     // muparser parses on the first evaluation: evaluate once (at the origin, where the result
     // may be anything; finiteness is checked where the formula is used) to report syntax errors.
@@ -83,6 +91,7 @@ double Expression::operator()(const double* x, int dim) const
   I.x = dim > 0 ? x[0] : 0.0;
   I.y = dim > 1 ? x[1] : 0.0;
   I.z = dim > 2 ? x[2] : 0.0;
+  I.t = g_loadTime;
   double v = 0.0;
   try {
     // A formula may divide by zero or take sqrt(-1) at some point: the result is checked below
@@ -92,12 +101,13 @@ double Expression::operator()(const double* x, int dim) const
   } catch (const mu::Parser::exception_type& e) {
     SC_THROW_IF(true, InputError,
                 I.key << " = '" << I.formula << "' cannot be evaluated at " << pointText(x, dim)
+                      << " (t = " << g_loadTime << ")"
                       << ": " << e.GetMsg() << ".");
   }
   SC_THROW_IF(!std::isfinite(v), InputError,
               I.key << " = '" << I.formula << "' evaluates to "
                     << (std::isnan(v) ? "NaN" : v > 0 ? "inf" : "-inf") << " at the point "
-                    << pointText(x, dim)
+                    << pointText(x, dim) << " (t = " << g_loadTime << ")"
                     << " of the body: give a formula that is finite wherever it is used.");
   return v;
 }
@@ -123,7 +133,7 @@ ExpressionArrayValidator::ExpressionArrayValidator(std::vector<int> allowedSizes
 
 void ExpressionArrayValidator::printDoc(const std::string& doc, std::ostream& out) const
 {
-  out << "# " << doc << "\n# Array(string) of formulas of x, y, z (muparser), of length";
+  out << "# " << doc << "\n# Array(string) of formulas of x, y, z, t (muparser), of length";
   for (std::size_t i = 0; i < sizes_.size(); ++i)
     out << (i ? " or " : " ") << sizes_[i];
   out << "\n";

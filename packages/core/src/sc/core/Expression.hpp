@@ -4,7 +4,8 @@
 // body force {0, -9.81*(2 - y)}. Evaluated with muparser (https://beltoforion.de/en/muparser/)
 // at the quadrature points where the data enters the system.
 //
-// Variables: x, y, z (z = 0 in 2D); constant: pi. muparser's functions (sin, cos, tan, asin,
+// Variables: x, y, z (z = 0 in 2D) and t, the time of the current load step (docs/theory.md
+// §"Load steps"; t = 1 in a run without load steps); constant: pi. muparser's functions (sin, cos, tan, asin,
 // acos, atan, sinh, cosh, tanh, sqrt, exp, ln, log10, abs, sign, rint, ...), the operators
 // + - * / ^, comparisons and the conditional a ? b : c. A deck's Array(string) is split at
 // commas by Teuchos, so a formula cannot contain a comma (write min(a, b) as a < b ? a : b).
@@ -35,6 +36,11 @@ public:
 
   const std::string& formula() const;
   const std::string& key() const;
+
+  /// The time t that every formula sees: the current load step's (1 without load steps). Set by
+  /// the application before a step's assembly (one time per process).
+  static void setLoadTime(double t);
+  static double loadTime();
 
 private:
   struct Impl;

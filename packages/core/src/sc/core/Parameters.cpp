@@ -297,7 +297,7 @@ RealArrayValidator::RealArrayValidator(std::vector<int> allowedSizes)
 
 void RealArrayValidator::printDoc(const std::string& doc, std::ostream& out) const
 {
-  out << "# " << doc << "\n# Array(double) of length";
+  out << "# " << doc << "\n# Array(double) of " << (sizes_.empty() ? "any length" : "length");
   for (std::size_t i = 0; i < sizes_.size(); ++i)
     out << (i ? " or " : " ") << sizes_[i];
   out << "\n";

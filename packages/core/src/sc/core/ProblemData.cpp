@@ -138,6 +138,13 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
                            "y)}; no commas inside a formula (docs/user-guide.md \"Loads and "
                            "supports\").",
                            {0, 1, 2, 3});
+    declareRealArray(t, "Values per step", Teuchos::Array<double>(),
+                     "Load steps (docs/theory.md §\"Load steps\"): the constant data of every "
+                     "step, row after row (Value's components for step 1, then step 2, ...; as "
+                     "many rows as 'Load steps/Times' has entries), instead of Value. E.g. "
+                     "{0, -0.01, 0.004, -0.01}: press, then move sideways. Formulas may use t "
+                     "instead ('Expression').",
+                     {});
     declareChoice(t, "Data", "Value", {"Value", "Exact solution"},
                   "Where u_D or t comes from: 'Value' (the keys Value or Expression), or the "
                   "exact solution named by 'Problem/Exact solution' (manufactured scenes; "
@@ -164,11 +171,19 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
               : type == "Contact"    ? BoundaryType::Contact
                                      : BoundaryType::Free;
     bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
+    bc.valuesPerStep = toVector(sub.get<Teuchos::Array<double>>("Values per step"));
     bc.fromExactSolution = sub.get<std::string>("Data") == "Exact solution";
     const std::string key = "Boundary Conditions/" + name;
     const auto& formulas = sub.get<Teuchos::Array<std::string>>("Expression");
     bc.expression = compileExpressions(formulas, key + "/Expression");
-    const bool hasValue = !bc.value.empty(), hasExpression = !bc.expression.empty();
+    SC_THROW_IF(!bc.valuesPerStep.empty() && (!bc.value.empty() || !bc.expression.empty()),
+                InputError,
+                "'" << key << "/Values per step' and '" << key << "/"
+                    << (bc.value.empty() ? "Expression" : "Value")
+                    << "' are both given; give one of them (Values per step: one row of "
+                    << "constants per load step).");
+    const bool hasValue = !bc.value.empty() || !bc.valuesPerStep.empty(),
+               hasExpression = !bc.expression.empty();
     if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction ||
         bc.type == BoundaryType::Pressure) {
       const bool pressure = bc.type == BoundaryType::Pressure;
@@ -190,7 +205,12 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                       << (pressure ? "" : ", one per component") << ").");
       const std::size_t expected = pressure ? 1 : static_cast<std::size_t>(dimension);
       const char* what = pressure ? "one value (the pressure p)" : "one value per dimension";
-      SC_THROW_IF(hasValue && bc.value.size() != expected, InputError,
+      SC_THROW_IF(!bc.valuesPerStep.empty() && bc.valuesPerStep.size() % expected != 0, InputError,
+                  "'" << key << "/Values per step' has " << bc.valuesPerStep.size()
+                      << " numbers, which is not a whole number of rows of " << expected
+                      << (pressure ? " (the pressure p per step)" : " (one value per dimension per step)")
+                      << ".");
+      SC_THROW_IF(!bc.value.empty() && bc.value.size() != expected, InputError,
                   "'" << key << "/Value' has " << bc.value.size() << " components, but "
                       << (pressure ? "Type Pressure takes one"
                                    : "Problem/Dimension is " + std::to_string(dimension))
@@ -202,7 +222,10 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                       << ": give " << (pressure ? "one formula" : "one formula per dimension")
                       << " (a formula cannot contain a comma: the array is split at commas).");
     } else {
-      const char* given = hasValue ? "Value" : hasExpression ? "Expression" : "Data";
+      const char* given = !bc.value.empty()        ? "Value"
+                          : !bc.valuesPerStep.empty() ? "Values per step"
+                          : hasExpression             ? "Expression"
+                                                      : "Data";
       SC_THROW_IF(hasValue || hasExpression || bc.fromExactSolution, InputError,
                   "'" << key << "/" << given << "' is given, but Type '" << type
                       << "' takes no data; remove it or use Type Displacement, Traction or "
@@ -211,6 +234,32 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
     bcs.conditions.push_back(bc);
   }
   return bcs;
+}
+
+void BoundaryConditions::checkStepTables(int numSteps, int dimension) const
+{
+  for (const auto& c : conditions) {
+    if (c.valuesPerStep.empty())
+      continue;
+    const std::size_t row = c.type == BoundaryType::Pressure ? 1 : static_cast<std::size_t>(dimension);
+    SC_THROW_IF(c.valuesPerStep.size() != row * static_cast<std::size_t>(numSteps), InputError,
+                "'Boundary Conditions/" << c.boundary << "/Values per step' has "
+                    << c.valuesPerStep.size() / row << " rows of " << row << ", but 'Load steps/Times' has "
+                    << numSteps << " entries: give one row per load step.");
+  }
+}
+
+BoundaryConditions BoundaryConditions::atStep(int step, int dimension) const
+{
+  BoundaryConditions out = *this;
+  for (auto& c : out.conditions) {
+    if (c.valuesPerStep.empty())
+      continue;
+    const std::size_t row = c.type == BoundaryType::Pressure ? 1 : static_cast<std::size_t>(dimension);
+    const auto first = c.valuesPerStep.begin() + static_cast<std::ptrdiff_t>(row * step);
+    c.value.assign(first, first + static_cast<std::ptrdiff_t>(row));
+  }
+  return out;
 }
 
 bool BoundaryConditions::hasContact() const
@@ -345,6 +394,11 @@ Teuchos::RCP<const Teuchos::ParameterList> BodyForce::getValidParameters()
                            "The body force as formulas of x, y, z, one per space dimension, "
                            "e.g. {0, -9.81e3*(1 + 0.1*y)}; evaluated at the quadrature points.",
                            {0, 2, 3});
+    declareRealArray(*pl, "Values per step", Teuchos::Array<double>(),
+                     "Load steps (docs/theory.md §\"Load steps\"): the constant body force of "
+                     "every step, row after row (one value per dimension per step), instead of "
+                     "Value.",
+                     {});
     return pl;
   }();
   return valid;
@@ -359,9 +413,22 @@ BodyForce BodyForce::fromParameters(const Teuchos::ParameterList& pl, const Prob
   if (pl.isParameter("Expression"))
     f.expression =
         compileExpressions(pl.get<Teuchos::Array<std::string>>("Expression"), "Body Force/Expression");
+  if (pl.isParameter("Values per step"))
+    f.valuesPerStep = toVector(pl.get<Teuchos::Array<double>>("Values per step"));
   SC_THROW_IF(!f.value.empty() && !f.expression.empty(), InputError,
               "'Body Force/Value' and 'Body Force/Expression' are both given; give one of them "
               "(Value: constants, Expression: formulas of x, y, z).");
+  SC_THROW_IF(!f.valuesPerStep.empty() && (!f.value.empty() || !f.expression.empty()), InputError,
+              "'Body Force/Values per step' and 'Body Force/"
+                  << (f.value.empty() ? "Expression" : "Value")
+                  << "' are both given; give one of them (Values per step: one row per load step).");
+  SC_THROW_IF(f.valuesPerStep.size() % static_cast<std::size_t>(dim) != 0, InputError,
+              "'Body Force/Values per step' has " << f.valuesPerStep.size()
+                  << " numbers, which is not a whole number of rows of " << dim
+                  << " (one value per dimension per step).");
+  SC_THROW_IF(!f.valuesPerStep.empty() && problem.exactSolution != "None", InputError,
+              "'Body Force/Values per step' is given, but 'Problem/Exact solution' = '"
+                  << problem.exactSolution << "' defines the body force; remove one of them.");
   SC_THROW_IF(!f.value.empty() && static_cast<int>(f.value.size()) != dim, InputError,
               "'Body Force/Value' has " << f.value.size() << " components, but Problem/Dimension is "
                                         << dim << ": give one value per dimension.");
@@ -378,6 +445,26 @@ BodyForce BodyForce::fromParameters(const Teuchos::ParameterList& pl, const Prob
                              << "' defines the body force (f = −div σ of the exact solution); "
                              << "remove the Body Force or set 'Problem/Exact solution' = 'None'.");
   return f;
+}
+
+void BodyForce::checkStepTable(int numSteps, int dimension) const
+{
+  SC_THROW_IF(!valuesPerStep.empty() &&
+                  valuesPerStep.size() != static_cast<std::size_t>(numSteps * dimension),
+              InputError,
+              "'Body Force/Values per step' has " << valuesPerStep.size() / dimension << " rows of "
+                  << dimension << ", but 'Load steps/Times' has " << numSteps
+                  << " entries: give one row per load step.");
+}
+
+BodyForce BodyForce::atStep(int step, int dimension) const
+{
+  BodyForce out = *this;
+  if (!valuesPerStep.empty()) {
+    const auto first = valuesPerStep.begin() + static_cast<std::ptrdiff_t>(step * dimension);
+    out.value.assign(first, first + dimension);
+  }
+  return out;
 }
 
 bool BodyForce::isZero() const { return constantZero(value, expression); }

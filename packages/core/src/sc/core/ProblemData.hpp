@@ -81,6 +81,9 @@ struct BoundaryCondition {
   std::vector<double> value;  ///< constant data; empty (and no expression) means zero
   bool fromExactSolution = false;  ///< u_D or t from Problem/Exact solution instead of value
   std::vector<Expression> expression;  ///< formulas instead of value (one per component)
+  /// "Values per step": the constant data of every load step, row after row (docs/theory.md
+  /// §"Load steps"); `value` is set from row n for step n (BoundaryConditions::atStep).
+  std::vector<double> valuesPerStep;
 
   /// The data at the boundary point x with the outward unit normal n (d components): u_D
   /// (Displacement), t (Traction: the value, the formulas or σ(x)n of the exact solution) or
@@ -109,6 +112,12 @@ struct BoundaryConditions {
   void checkBoundaryNames(const std::vector<std::string>& meshBoundaries,
                           const std::string& meshDescription) const;
 
+  /// Load steps: every "Values per step" table has `numSteps` rows (InputError naming the key
+  /// otherwise).
+  void checkStepTables(int numSteps, int dimension) const;
+  /// The conditions of load step `step` (0-based): each table's row as the part's Value.
+  BoundaryConditions atStep(int step, int dimension) const;
+
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static BoundaryConditions fromParameters(const Teuchos::ParameterList& bcList, int dimension);
 };
@@ -119,6 +128,12 @@ struct BoundaryConditions {
 struct BodyForce {
   std::vector<double> value;           ///< d constants, or empty
   std::vector<Expression> expression;  ///< d formulas, or empty
+  std::vector<double> valuesPerStep;   ///< "Values per step": d values per load step
+
+  /// Load steps: the table has `numSteps` rows of d values (InputError otherwise).
+  void checkStepTable(int numSteps, int dimension) const;
+  /// The body force of load step `step` (0-based): the table's row as Value.
+  BodyForce atStep(int step, int dimension) const;
 
   bool isZero() const;
   /// f(x), d components.
