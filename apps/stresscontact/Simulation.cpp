@@ -20,7 +20,7 @@
 #include <sc/assembly/LoadsAndSupports.hpp>
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/assembly/MixedElasticitySystem.hpp>
-#include <sc/assembly/Multigrid.hpp>
+#include <sc/solvers/StressHierarchy.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/BodyFrameCheck.hpp>
 #include <sc/contact/ContactSummary.hpp>
@@ -94,7 +94,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
     autoSolver_ = type == "Auto";
     if ((iterative && text(il, "Stress block", "MUMPS") == "Multigrid") ||
         (autoSolver_ && dim == 3 && !boundaryConditions_.hasContact()))
-      hierarchy_ = std::make_unique<assembly::StressHierarchy>(discretization_.degree, comm_);
+      hierarchy_ = std::make_unique<solvers::StressHierarchy>(discretization_.degree, comm_);
     // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md §"Contact
     // and friction"), and Symmetric = false declines to exploit symmetry.
     const bool minres = iterative && text(il, "Method", "Auto") == "MINRES";

@@ -44,11 +44,11 @@ class MixedElasticitySpace;
 namespace sc::assembly {
 class MixedElasticityAssembler;
 class MixedElasticitySystem;
-class StressHierarchy;
 }  // namespace sc::assembly
 namespace sc::solvers {
 class LinearSolver;
 struct MultigridLevel;
+class StressHierarchy;
 struct ProblemSize;
 }
 namespace sc::core {
@@ -182,7 +182,7 @@ private:
   /// Linear Solver/Iterative/Stress block = Multigrid, or Type = Auto on a 3D scene without
   /// contact: the meshes of the run (initial mesh and every refinement, or the restored mesh
   /// after a restart), from which the multigrid levels are chosen each cycle; null otherwise.
-  std::unique_ptr<assembly::StressHierarchy> hierarchy_;
+  std::unique_ptr<solvers::StressHierarchy> hierarchy_;
   /// Linear Solver/Type = Auto: solver_ is chosen per cycle; autoType_ = its resolved Type.
   bool autoSolver_ = false;
   std::string autoType_;

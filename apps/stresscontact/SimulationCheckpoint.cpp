@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <sc/assembly/Multigrid.hpp>
+#include <sc/solvers/StressHierarchy.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/core/Error.hpp>
@@ -244,7 +244,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   mesh_ = refiner_->mesh();
   if (hierarchy_) {
     // The meshes before the checkpoint are not stored: the hierarchy restarts from this one.
-    hierarchy_ = std::make_unique<assembly::StressHierarchy>(discretization_.degree, comm_);
+    hierarchy_ = std::make_unique<solvers::StressHierarchy>(discretization_.degree, comm_);
     hierarchy_->addMesh(mesh_, {});
   }
   if (mesh_->numElements() != scalar("mesh_elements") || mesh_->numVertices() != scalar("mesh_vertices"))

@@ -32,7 +32,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/MixedElasticitySystem.hpp>
-#include <sc/assembly/Multigrid.hpp>
+#include <sc/solvers/StressHierarchy.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -135,7 +135,7 @@ int main(int argc, char* argv[])
   }
   // Stress block = Multigrid: the nested hierarchy (coarsest first), extended at every refinement.
   const bool multigrid = stressBlock == "Multigrid";
-  sc::assembly::StressHierarchy hierarchy(degree, comm);
+  sc::solvers::StressHierarchy hierarchy(degree, comm);
   std::vector<int> parent;  // fine element -> coarse element of the last refinement
   while (true) {
     auto m = refiner->mesh();

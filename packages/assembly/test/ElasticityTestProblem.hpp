@@ -13,7 +13,7 @@
 
 #include <sc/assembly/MixedElasticityAssembler.hpp>
 #include <sc/assembly/MixedElasticitySystem.hpp>
-#include <sc/assembly/Multigrid.hpp>
+#include <sc/solvers/StressHierarchy.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/core/Parameters.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -108,7 +108,7 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
   solverList.set("Type", s.solver);
   auto solver = solvers::createLinearSolver(solverList);
   std::vector<LevelResult> results;
-  assembly::StressHierarchy hierarchy(s.degree, comm);
+  solvers::StressHierarchy hierarchy(s.degree, comm);
   if (s.multigrid)
     hierarchy.addMesh(refiner->mesh(), {});
   for (int level = 0; level < s.levels; ++level) {

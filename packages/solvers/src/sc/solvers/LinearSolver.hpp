@@ -59,7 +59,7 @@ struct BlockStructure {
   /// zero), unscaled. M_u must be element-block diagonal (discontinuous displacements).
   Teuchos::RCP<const CrsMatrix> fieldMass;
   /// Nested hierarchy, coarsest level first, the last level being the operator's mesh: needed by
-  /// `Stress block` = Multigrid (sc::assembly::stressProlongation, stressPatches).
+  /// `Stress block` = Multigrid (StressHierarchy.hpp: stressProlongation, stressPatches).
   std::vector<MultigridLevel> multigrid;
 
   bool isSet() const { return stressDofs + displacementDofs + rotationDofs > 0; }

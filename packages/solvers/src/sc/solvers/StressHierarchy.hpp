@@ -1,13 +1,15 @@
 #pragma once
-// What the geometric multigrid of the stress block needs from the discretisation (docs/theory.md
-// §"Linear solvers"): the exact prolongation of RT_k stresses between nested meshes, and the
-// patches of the additive Schwarz (Arnold–Falk–Winther) smoother. Tpetra stays in Multigrid.cpp.
+// What the geometric multigrid of the stress block (StressMultigrid.hpp) needs from the
+// discretisation (docs/theory.md §"Linear solvers"): the exact prolongation of RT_k stresses
+// between nested meshes, the patches of the additive Schwarz (Arnold–Falk–Winther) smoother, and
+// the hierarchy of a run's meshes from which the levels are chosen. Tpetra stays in
+// StressHierarchy.cpp.
 #include <vector>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
 
-#include <sc/assembly/MixedElasticityAssembler.hpp>
+#include <sc/solvers/LinearSolver.hpp>
 
 namespace sc::disc {
 class MixedElasticitySpace;
@@ -16,10 +18,6 @@ namespace sc::mesh {
 class SimplexMesh;
 }
 namespace sc::solvers {
-struct MultigridLevel;
-}
-
-namespace sc::assembly {
 
 /// P with fine σ = P coarse σ exactly when the fine mesh refines the coarse one (RT_k spaces are
 /// nested): row g (a σ DOF of `fine`, owned by this rank) holds the coefficients of the coarse
@@ -61,7 +59,7 @@ public:
   /// The levels for `finest`, the space on the last mesh added (coarsest first; a single level
   /// when only one mesh is known: the stress block is then solved directly). The coarser levels'
   /// spaces are built (partitioned) here.
-  std::vector<solvers::MultigridLevel> levels(const disc::MixedElasticitySpace& finest) const;
+  std::vector<MultigridLevel> levels(const disc::MixedElasticitySpace& finest) const;
   /// The mesh indices the last call of levels() chose (coarsest first).
   const std::vector<int>& chosen() const { return chosen_; }
 
@@ -74,4 +72,4 @@ private:
   mutable std::vector<int> chosen_;
 };
 
-}  // namespace sc::assembly
+}  // namespace sc::solvers

@@ -1,6 +1,6 @@
 // Prolongation and smoother patches for the multigrid of the stress block (see the header).
 
-#include <sc/assembly/Multigrid.hpp>
+#include <sc/solvers/StressHierarchy.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -10,14 +10,13 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
-#include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
+#include <sc/mesh/Partitioning.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
-#include <sc/solvers/LinearSolver.hpp>
 
-namespace sc::assembly {
+namespace sc::solvers {
 
 namespace {
 using GO = Tpetra::Map<>::global_ordinal_type;
@@ -208,7 +207,7 @@ void StressHierarchy::addMesh(Teuchos::RCP<const mesh::SimplexMesh> mesh,
 
 int StressHierarchy::meshElements(int i) const { return meshes_.at(i)->numElements(); }
 
-std::vector<solvers::MultigridLevel> StressHierarchy::levels(
+std::vector<MultigridLevel> StressHierarchy::levels(
     const disc::MixedElasticitySpace& finest) const
 {
   SC_THROW_IF(meshes_.empty() || &finest.mesh() != meshes_.back().get(), core::InternalError,
@@ -223,7 +222,7 @@ std::vector<solvers::MultigridLevel> StressHierarchy::levels(
     pick.back() = 0;  // the first mesh is the coarsest level (fewer elements: the ratio holds)
   std::reverse(pick.begin(), pick.end());
   chosen_ = pick;
-  std::vector<solvers::MultigridLevel> out(pick.size());
+  std::vector<MultigridLevel> out(pick.size());
   Teuchos::RCP<const disc::MixedElasticitySpace> previous;
   for (std::size_t l = 0; l < pick.size(); ++l) {
     const int i = pick[l];
@@ -231,7 +230,9 @@ std::vector<solvers::MultigridLevel> StressHierarchy::levels(
     if (l + 1 == pick.size())
       space = Teuchos::rcpFromRef(finest);
     else
-      space = MixedElasticitySystem(meshes_[i], degree_, comm_).spacePtr();
+      // partitioned and numbered as sc::assembly::MixedElasticitySystem does (METIS)
+      space = Teuchos::rcp(new disc::MixedElasticitySpace(
+          meshes_[i], degree_, mesh::partitionElements(*meshes_[i], *comm_), comm_->getRank()));
     if (l > 0) {
       // parent in mesh pick[l − 1] of every element of mesh i, composed over the meshes between
       std::vector<int> parent = parents_[i];
@@ -246,4 +247,4 @@ std::vector<solvers::MultigridLevel> StressHierarchy::levels(
   return out;
 }
 
-}  // namespace sc::assembly
+}  // namespace sc::solvers

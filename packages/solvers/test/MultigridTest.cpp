@@ -14,7 +14,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 
-#include <sc/assembly/Multigrid.hpp>
+#include <sc/solvers/StressHierarchy.hpp>
 #include <sc/disc/ElementValues.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
@@ -51,7 +51,7 @@ TEUCHOS_UNIT_TEST(Multigrid, ProlongationIsExact)
       fine.setupAssembler();
       auto fineSpace = fine.spacePtr();
       const auto& fa = fine.assembler();
-      auto P = sc::assembly::stressProlongation(*coarseSpace, *fineSpace, step.elementParent, comm);
+      auto P = sc::solvers::stressProlongation(*coarseSpace, *fineSpace, step.elementParent, comm);
       // σ part of xc on P's domain map, P σ_c into a fine monolithic vector (u, θ = 0)
       Tpetra::MultiVector<> sc(P->getDomainMap(), 1), sf(P->getRangeMap(), 1);
       {
@@ -135,7 +135,7 @@ void checkPatches(int dim, Teuchos::FancyOStream& out, bool& success)
   auto m = refiner->mesh();
   sc::assembly::MixedElasticitySystem system(m, 1, comm);
   const auto& space = system.space();
-  const auto patches = sc::assembly::stressPatches(space);
+  const auto patches = sc::solvers::stressPatches(space);
   std::set<long long> covered;
   std::size_t largest = 0;
   for (const auto& p : patches) {
@@ -184,7 +184,7 @@ TEUCHOS_UNIT_TEST(Multigrid, HierarchyOfLocalRefinements)
   meshList.set("Source", std::string("Unit square"));
   meshList.set("Initial mesh size", 0.25);
   auto refiner = sc::mesh::MeshFactory::build(meshList, 2);
-  sc::assembly::StressHierarchy hierarchy(1, comm);
+  sc::solvers::StressHierarchy hierarchy(1, comm);
   hierarchy.addMesh(refiner->mesh(), {});
   for (int step = 0; step < 7; ++step) {
     const auto& m = *refiner->mesh();
