@@ -7,6 +7,7 @@
 #include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/contact/ContactSettings.hpp>
 #include <sc/core/Error.hpp>
+#include <sc/core/LoadSteps.hpp>
 #include <sc/core/Parameters.hpp>
 #include <sc/core/ProblemData.hpp>
 #include <sc/estimator/EstimatorSettings.hpp>
@@ -44,6 +45,9 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
         "Body force f in div σ + f = 0, e.g. gravity (docs/user-guide.md \"Loads and supports\").");
     add("Contact", contact::ContactSettings::getValidParameters(),
         "Rigid obstacle and friction law, for boundary parts of Type Contact (docs/theory.md §\"Contact and friction\").");
+    add("Load steps", core::LoadSteps::getValidParameters(),
+        "Quasi-static load steps with friction on the slip increment (docs/theory.md "
+        "§\"Load steps\"); none: one step at t = 1.");
     add("Discretization", core::DiscretizationSettings::getValidParameters(),
         "Finite element spaces (docs/theory.md §\"Mixed formulation\").");
     add("Linear Solver", solvers::LinearSolverFactory::getValidParameters(),

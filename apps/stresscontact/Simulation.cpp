@@ -78,6 +78,18 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);
+  // Load steps: the tables must have a row per step; the run starts with step 1's data.
+  loadSteps_ = core::LoadSteps::fromParameters(params_->sublist("Load steps"), dim);
+  boundaryConditions_.checkStepTables(loadSteps_.numSteps(), dim);
+  bodyForce_.checkStepTable(loadSteps_.numSteps(), dim);
+  SC_THROW_IF(!loadSteps_.obstacleDisplacement.empty() && !boundaryConditions_.hasContact(),
+              core::InputError,
+              "'Load steps/Obstacle displacement' is given, but the scene has no boundary part of "
+              "Type Contact (there is no obstacle to move).");
+  deckConditions_ = boundaryConditions_;
+  deckBodyForce_ = bodyForce_;
+  deckContact_ = contact_;
+  applyLoadStep(0);
   {
     // The Linear Solver keys these checks need (the list is validated when the solver is built,
     // below; absent keys read as their defaults here).
@@ -126,6 +138,11 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
   loop_ = std::make_unique<adapt::AdaptiveLoop>(adaptivity_, comm_, &progress_, &timers_);
+  if (loadSteps_.numSteps() > 1) {
+    adapt::AdaptivitySettings later = adaptivity_;
+    later.cycles = loadSteps_.cyclesPerLaterStep;
+    laterStepLoop_ = std::make_unique<adapt::AdaptiveLoop>(later, comm_, &progress_, &timers_);
+  }
 
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
@@ -161,6 +178,22 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
 }
 
 Simulation::~Simulation() = default;
+
+void Simulation::applyLoadStep(int step)
+{
+  const int dim = problem_.dimension;
+  loadStep_ = step;
+  boundaryConditions_ = deckConditions_.atStep(step, dim);
+  bodyForce_ = deckBodyForce_.atStep(step, dim);
+  core::Expression::setLoadTime(loadSteps_.times[step]);
+  if (!boundaryConditions_.hasContact())
+    return;
+  contact_ = deckContact_;
+  const auto shift = loadSteps_.obstacleDisplacementAt(step, dim);
+  for (auto* point : {&contact_.obstaclePoint, &contact_.obstacleCenter})
+    for (std::size_t i = 0; i < point->size() && i < shift.size(); ++i)
+      (*point)[i] += shift[i];
+}
 
 void Simulation::setupMesh()
 {
@@ -220,8 +253,20 @@ void Simulation::setupMesh()
                                           : nullptr) >= 0;
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
   if (boundaryConditions_.hasContact()) {
-    contact::checkObstacle(*mesh_, contact_,
-                           boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
+    // Every load step's obstacle position, before anything is written (a step that moves the
+    // obstacle off the body, or too deep into it, is an input error of the deck).
+    for (int step = loadSteps_.numSteps() - 1; step >= 0; --step) {
+      applyLoadStep(step);
+      try {
+        contact::checkObstacle(*mesh_, contact_,
+                               boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
+      } catch (const core::InputError& e) {
+        SC_THROW_IF(loadSteps_.given, core::InputError,
+                    "load step " << step + 1 << " ('Load steps/Obstacle displacement' row "
+                                 << step + 1 << "): " << e.what());
+        throw;
+      }
+    }
     contact::checkBodyFrameFaces(*mesh_, contact_,
                                  boundaryConditions_.boundariesOfType(core::BoundaryType::Contact));
   }
@@ -544,6 +589,18 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
   writeFields(cycle);
   killIfAsked(cycle);
   recordCycle(cycle, marking, stopReason);
+  lastCycle_ = cycle;
+  if (loadSteps_.given) {
+    // Load steps (docs/output.md): the step and its time, and the 2D stick zone's two ends
+    // (after a tangential step the zone is not centred).
+    auto& c = summary_->currentCycle();
+    c["load_step"] = {{"step", loadStep_ + 1}, {"time", loadSteps_.times[loadStep_]}};
+    if (solved_ && contactSolver_ && problem_.dimension == 2) {
+      const auto cs = contact::summarizeContact(contactSolver_->points(), 2, contact_.obstacleNormal,
+                                                *comm_, 1e-12 * 2.0 * material_.shearModulus());
+      c["contact"]["stick_zone_ends"] = {cs.center[0] + cs.stickZoneEnds[0], cs.center[0] + cs.stickZoneEnds[1]};
+    }
+  }
   recordCost();
   summary_->write();
   io::writeHistory(*comm_, output_.directory, summary_->json()["cycles"], problem_.dimension,
@@ -903,12 +960,32 @@ void Simulation::run()
 
   try {
     loop_->run(*this, firstCycle, std::move(marked));
+    // Load steps after the first (docs/theory.md §"Load steps"): each from the last mesh and
+    // contact state of the step before, whose r_T becomes the friction history.
+    for (int step = 1; step < loadSteps_.numSteps(); ++step) {
+      applyLoadStep(step);
+      std::ostringstream os;
+      os << "load step " << step + 1 << " of " << loadSteps_.numSteps() << ", t = "
+         << loadSteps_.times[step];
+      progress_.message(os.str());
+      if (boundaryConditions_.hasContact()) {
+        contact::commitLoadStep(previousPoints_);
+        // The same mesh: every contact face is its own parent.
+        contactFaceParents_.assign(mesh_->numFaces(), -1);
+        for (int f : mesh_->boundaryFaces())
+          contactFaceParents_[f] = f;
+      }
+      laterStepLoop_->run(*this, 0, {}, lastCycle_ + 1);
+    }
     // A scene whose contact could not be solved is not "converged".
     summary_->setConverged(solved_);
     summary_->write();
     progress_.message("done: " + output_.directory + "/summary.json");
   } catch (const core::ConvergenceError& e) {
-    // Collective (the active-set decision is global): every rank gets here.
+    // Collective (the active-set decision is global): every rank gets here. The steps before
+    // are in summary.json; the failed step is named.
+    if (loadSteps_.given)
+      summary_->json()["failed_load_step"] = loadStep_ + 1;
     summary_->setError(e.what());
     summary_->write();
     throw;

@@ -22,6 +22,7 @@
 #include <sc/adapt/AdaptiveProblem.hpp>
 #include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/contact/ContactSettings.hpp>
+#include <sc/core/LoadSteps.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
 #include <sc/core/Timers.hpp>
@@ -111,6 +112,9 @@ private:
   /// checkpoint.h5, timed into summary.json's "checkpoint" phase.
   void checkpoint(int cycle, const adapt::Marking& marking) override;
 
+  /// Load step `step` (0-based, docs/theory.md §"Load steps"): the step's boundary values, body
+  /// force, obstacle position and formula time.
+  void applyLoadStep(int step);
   void setupMesh();
   void warnIfLargeDisplacement() const;
   /// The cycle's assembly::MixedElasticitySystem: partition, spaces, assembled matrix.
@@ -151,9 +155,19 @@ private:
   // Scene data and method settings (read once, in the constructor).
   core::ProblemSettings problem_;
   core::Material material_;
-  core::BoundaryConditions boundaryConditions_;
-  core::BodyForce bodyForce_;  ///< "Body Force" (f = 0 when not given)
-  contact::ContactSettings contact_;
+  core::BoundaryConditions boundaryConditions_;  ///< of the current load step
+  core::BodyForce bodyForce_;  ///< "Body Force" (f = 0 when not given), of the current load step
+  contact::ContactSettings contact_;  ///< the obstacle at the current load step
+  /// Load steps: the times and per-step data; the deck's conditions, body force and contact
+  /// settings from which each step's are made; the current step (0-based).
+  core::LoadSteps loadSteps_;
+  core::BoundaryConditions deckConditions_;
+  core::BodyForce deckBodyForce_;
+  contact::ContactSettings deckContact_;
+  int loadStep_ = 0;
+  /// The loop of the load steps after the first (Load steps/Cycles per later step cycles).
+  std::unique_ptr<adapt::AdaptiveLoop> laterStepLoop_;
+  int lastCycle_ = -1;  ///< the last cycle output (numbered through the load steps)
   core::DiscretizationSettings discretization_;
   estimator::EstimatorSettings estimatorSettings_;
   adapt::AdaptivitySettings adaptivity_;

@@ -165,6 +165,14 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
 
 int Simulation::readCheckpoint(std::vector<int>& marked)
 {
+  // The checkpoint holds neither the load step nor the friction history (docs/adaptivity.md
+  // "Checkpoint and restart"): a run with several load steps cannot be continued yet, and says
+  // so before anything is read or written.
+  SC_THROW_IF(loadSteps_.numSteps() > 1, core::InputError,
+              "--restart of a run with " << loadSteps_.numSteps()
+                  << " load steps ('Load steps/Times') is not available: the checkpoint does not "
+                     "keep the load step and the friction history. Run the deck again from the "
+                     "start.");
   const std::string path = checkpointPath(restartDirectory_);
   // A run killed in cycle 0 wrote no checkpoint (none is written before a cycle is complete) but
   // may have written that cycle's fields: nothing to continue, so the restart is the run itself,

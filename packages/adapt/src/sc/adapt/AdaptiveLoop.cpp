@@ -22,7 +22,7 @@ AdaptiveLoop::AdaptiveLoop(const AdaptivitySettings& settings,
 AdaptiveLoop::~AdaptiveLoop() = default;
 
 std::string AdaptiveLoop::run(AdaptiveProblem& problem, int firstCycle,
-                              std::vector<int> markedBeforeFirstCycle)
+                              std::vector<int> markedBeforeFirstCycle, int cycleOffset)
 {
   SC_THROW_IF(firstCycle < 0, core::InternalError, "first cycle " << firstCycle);
   Marking marking;
@@ -30,12 +30,13 @@ std::string AdaptiveLoop::run(AdaptiveProblem& problem, int firstCycle,
   if (!marking.uniform)
     marking.elements = std::move(markedBeforeFirstCycle);
   for (int cycle = firstCycle;; ++cycle) {
+    const int global = cycle + cycleOffset;  // the number the problem's steps see
     if (progress_)
-      progress_->setCycle(cycle, settings_.cycles);
+      progress_->setCycle(global, settings_.cycles + cycleOffset);
     if (cycle > 0)
       problem.refine(marking);
-    problem.solve(cycle);
-    const CycleEstimate estimate = problem.estimate(cycle);
+    problem.solve(global);
+    const CycleEstimate estimate = problem.estimate(global);
     std::string reason = stop_->reason(cycle, estimate.dofs, estimate.available ? estimate.eta : -1.0,
                                        estimate.available ? estimate.norm : -1.0);
     marking = Marking();
@@ -47,14 +48,14 @@ std::string AdaptiveLoop::run(AdaptiveProblem& problem, int firstCycle,
     }
     if (!reason.empty())
       marking.elements.clear();  // nothing is refined after the last cycle
-    problem.output(cycle, marking, reason);
+    problem.output(global, marking, reason);
     if (!reason.empty()) {
       if (progress_)
         progress_->report("stop", reason);
       return reason;
     }
     // The next cycle can start from here (a run that stops now needs no checkpoint).
-    problem.checkpoint(cycle, marking);
+    problem.checkpoint(global, marking);
   }
 }
 

@@ -49,8 +49,12 @@ public:
   /// the cycle after its checkpoint's and the marking saved with it (Marking::elements; the
   /// loop sets Marking::uniform from the settings). Exceptions of the problem's steps pass
   /// through.
+  /// `cycleOffset` (load steps, docs/theory.md §"Load steps"): the problem's steps are called
+  /// with cycle + cycleOffset, so that the cycles of a run's later steps continue its numbering,
+  /// while the loop counts its own cycles from 0 (a cycle 0 is not refined, and Cycles counts
+  /// the cycles of this run() call).
   std::string run(AdaptiveProblem& problem, int firstCycle = 0,
-                  std::vector<int> markedBeforeFirstCycle = {});
+                  std::vector<int> markedBeforeFirstCycle = {}, int cycleOffset = 0);
 
   const AdaptivitySettings& settings() const { return settings_; }
   const Marker& marker() const { return *marker_; }
