@@ -213,7 +213,7 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
     if (options_.stressBlock == "MUMPS" || options_.stressBlock == "KLU2") {
       Teuchos::ParameterList dl(options_.directList);
       dl.set("Type", options_.stressBlock);
-      prec->stressDirect = createDirectSolver(dl);
+      prec->stressDirect = createDirectSolverFromValidated(dl);
     }
     m.prec = prec;
     m.massUsed = blocks.fieldMass;

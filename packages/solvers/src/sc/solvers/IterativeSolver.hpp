@@ -33,18 +33,21 @@
 
 namespace sc::solvers {
 
+/// The Linear Solver/Iterative keys (read by LinearSolverFactory from the validated list; their
+/// defaults are declared there, in getValidParameters(), and nowhere else).
 struct IterativeOptions {
-  std::string method = "Auto";  ///< Auto (MINRES if symmetric, else GMRES), MINRES, GMRES
-  double tolerance = 1e-8;
-  int maxIterations = 1000;
-  int restart = 300;            ///< GMRES Krylov subspace size
-  int outputFrequency = 0;      ///< print the residual every n iterations (0: never)
-  std::string stressBlock = "MUMPS";  ///< MUMPS, KLU2, Multigrid, MueLu
+  std::string method;  ///< Auto (MINRES if symmetric, else GMRES), MINRES, GMRES
+  double tolerance;
+  int maxIterations;
+  int restart;          ///< GMRES Krylov subspace size
+  int outputFrequency;  ///< print the residual every n iterations (0: never)
+  std::string stressBlock;  ///< MUMPS, KLU2, Multigrid, MueLu
   /// Stress block = Multigrid: Chebyshev degree of the patch smoother (0: 2 in 2D, 3 in 3D) and
   /// the ratio λ_max/λ_min of the smoothed part of the spectrum of B A.
-  int smootherDegree = 0;
-  double smootherRatio = 10.0;
-  /// The "Linear Solver" list of the direct stress-block sub-solver (Type set from stressBlock).
+  int smootherDegree;
+  double smootherRatio;
+  /// The validated "Linear Solver" list of the direct stress-block sub-solver (Type set from
+  /// stressBlock).
   Teuchos::ParameterList directList;
 };
 

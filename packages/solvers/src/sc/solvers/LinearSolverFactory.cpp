@@ -171,7 +171,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
   return valid;
 }
 
-Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterList& list)
+Teuchos::ParameterList LinearSolverFactory::validate(const Teuchos::ParameterList& list)
 {
   const auto types = knownTypes();
   if (list.isParameter("Type") && list.isType<std::string>("Type")) {
@@ -187,6 +187,11 @@ Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterL
   }
   Teuchos::ParameterList pl(list);
   sc::core::validateParameters(pl, *getValidParameters(), "Linear Solver");
+  return pl;
+}
+
+Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterList& pl)
+{
   const auto type = pl.get<std::string>("Type");
   SC_THROW_IF(type == "Auto", sc::core::InputError,
               "Linear Solver/Type = Auto is chosen from the problem (dimension, unknowns, ranks, "
@@ -206,19 +211,16 @@ Teuchos::RCP<LinearSolver> LinearSolverFactory::create(const Teuchos::ParameterL
 
 Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList)
 {
-  return LinearSolverFactory::create(linearSolverList);
+  return LinearSolverFactory::create(LinearSolverFactory::validate(linearSolverList));
 }
 
-Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& linearSolverList,
+Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& validatedList,
                                        const ProblemSize& problem)
 {
-  Teuchos::ParameterList pl(linearSolverList);
-  if (!pl.isParameter("Type") || !pl.isType<std::string>("Type") ||
-      pl.get<std::string>("Type") != "Auto")
+  Teuchos::ParameterList pl(validatedList);
+  if (pl.get<std::string>("Type") != "Auto")
     return pl;
-  const int threshold = pl.isParameter("Auto iterative unknowns")
-                            ? pl.get<int>("Auto iterative unknowns")
-                            : static_cast<int>(kAutoIterativeDofs3D);
+  const int threshold = pl.get<int>("Auto iterative unknowns");
   const bool iterative = problem.dimension == 3 && !problem.contact && problem.hierarchy &&
                          problem.dofs >= threshold;
   pl.set("Type", std::string(iterative ? "Iterative" : "MUMPS"));
@@ -230,10 +232,16 @@ Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& linearSolve
 Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList,
                                               const ProblemSize& problem)
 {
-  return LinearSolverFactory::create(resolveAutoType(linearSolverList, problem));
+  return LinearSolverFactory::create(
+      resolveAutoType(LinearSolverFactory::validate(linearSolverList), problem));
 }
 
 Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList)
+{
+  return createDirectSolverFromValidated(LinearSolverFactory::validate(linearSolverList));
+}
+
+Teuchos::RCP<DirectSolver> createDirectSolverFromValidated(const Teuchos::ParameterList& linearSolverList)
 {
   auto direct = Teuchos::rcp_dynamic_cast<DirectSolver>(LinearSolverFactory::create(linearSolverList));
   SC_THROW_IF(direct.is_null(), sc::core::InputError,

@@ -26,9 +26,15 @@ public:
   /// Known solver types, in the order they are listed to users (KLU2, MUMPS, Iterative, Auto).
   static std::vector<std::string> knownTypes();
 
-  /// Build the solver named by list's "Type". The list is validated (a copy, defaults filled in):
-  /// unknown keys, bad values and unknown types are sc::core::InputError.
-  static Teuchos::RCP<LinearSolver> create(const Teuchos::ParameterList& linearSolverList);
+  /// A "Linear Solver" list checked against getValidParameters() with its defaults filled in:
+  /// unknown keys, bad values and unknown types are sc::core::InputError. Done once, where a
+  /// list enters (the application validates the whole deck; createLinearSolver for a list of
+  /// a test or benchmark).
+  static Teuchos::ParameterList validate(const Teuchos::ParameterList& linearSolverList);
+
+  /// Build the solver named by the validated list's "Type" (not validated again: every key is
+  /// read without a default). Type = Auto is an InputError here (resolveAutoType first).
+  static Teuchos::RCP<LinearSolver> create(const Teuchos::ParameterList& validatedList);
 };
 
 /// What `Type = Auto` looks at (docs/solvers.md, "Type = Auto").
@@ -44,19 +50,23 @@ struct ProblemSize {
 /// `Auto iterative unknowns` (default kAutoIterativeDofs3D) unknowns, where MUMPS' memory (~N^{4/3}) exceeds one 24 GB node: there
 /// Iterative with Stress block = Multigrid (memory ~N). Measured in docs/solvers.md.
 constexpr long long kAutoIterativeDofs3D = 1500000;
-/// The list to build for `problem`: `list` itself unless its Type is Auto, else a copy with Type
-/// = MUMPS or Type = Iterative and Iterative/Stress block = Multigrid, by the rule above.
-Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& linearSolverList,
+/// The list to build for `problem`: the validated list itself unless its Type is Auto, else a
+/// copy with Type = MUMPS or Type = Iterative and Iterative/Stress block = Multigrid, by the rule
+/// above ('Auto iterative unknowns' the threshold).
+Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& validatedList,
                                        const ProblemSize& problem);
 
-/// Same as LinearSolverFactory::create. Type = Auto is an InputError here: it needs the problem
-/// (resolveAutoType, or the overload below).
+/// LinearSolverFactory::create(LinearSolverFactory::validate(list)). Type = Auto is an
+/// InputError here: it needs the problem (resolveAutoType, or the overload below).
 Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList);
-/// createLinearSolver(resolveAutoType(linearSolverList, problem)).
+/// The validated list's solver for `problem` (Type = Auto resolved).
 Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& linearSolverList,
                                               const ProblemSize& problem);
 /// The same for a direct type (KLU2, MUMPS), with the factorisation interface of DirectSolver;
 /// Type = Iterative is an InputError.
 Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList);
+/// The same for a list validated already (the Krylov solver's stress-block and coarse solvers:
+/// its own validated list with the direct Type).
+Teuchos::RCP<DirectSolver> createDirectSolverFromValidated(const Teuchos::ParameterList& validatedList);
 
 }  // namespace sc::solvers

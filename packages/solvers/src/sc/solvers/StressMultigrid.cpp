@@ -232,10 +232,7 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
     // so the bound is raised by 10% (Ifpack2's default boost factor).
     lev.lambdaMax = 1.1 * largestEigenvalue(*lev.B, *lev.A, 15);
   }
-  Teuchos::ParameterList dl(directList);
-  if (!dl.isParameter("Type"))
-    dl.set("Type", std::string("MUMPS"));
-  mg->coarse = createDirectSolver(dl);
+  mg->coarse = createDirectSolverFromValidated(directList);
   mg->coarse->setOperator(mg->levels[0].A, symmetric);
   mg->coarse->numericFactorization();
   return mg;

@@ -20,7 +20,7 @@ namespace sc::solvers {
 /// `blocks`, as an operator Y = V(X). `constraintRows[i]` (local rows of S): a row without
 /// displacement coupling (traction data, a replaced contact row), which takes no coarse
 /// correction. The smoother's degree and ratio come from `options`; the coarsest level is solved
-/// by the direct solver of `directList` (MUMPS unless it sets `Type`). Throws InputError when
+/// by the direct solver of the validated list `directList` (its `Type`). Throws InputError when
 /// `blocks` has no hierarchy.
 Teuchos::RCP<Tpetra::Operator<>> buildStressMultigrid(const BlockStructure& blocks,
                                                        const Teuchos::RCP<CrsMatrix>& S,
