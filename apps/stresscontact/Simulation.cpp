@@ -595,6 +595,16 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
     // (after a tangential step the zone is not centred).
     auto& c = summary_->currentCycle();
     c["load_step"] = {{"step", loadStep_ + 1}, {"time", loadSteps_.times[loadStep_]}};
+    // The values the step prescribes from tables (Values per step, Obstacle displacement).
+    auto& prescribed = c["load_step"]["prescribed"];
+    prescribed = nlohmann::ordered_json::object();
+    for (const auto& bc : boundaryConditions_.conditions)
+      if (!deckConditions_.find(bc.boundary)->valuesPerStep.empty())
+        prescribed[bc.boundary] = bc.value;
+    if (!deckBodyForce_.valuesPerStep.empty())
+      prescribed["body_force"] = bodyForce_.value;
+    if (!loadSteps_.obstacleDisplacement.empty())
+      prescribed["obstacle"] = loadSteps_.obstacleDisplacementAt(loadStep_, problem_.dimension);
     if (solved_ && contactSolver_ && problem_.dimension == 2) {
       const auto cs = contact::summarizeContact(contactSolver_->points(), 2, contact_.obstacleNormal,
                                                 *comm_, 1e-12 * 2.0 * material_.shearModulus());

@@ -32,7 +32,16 @@ using sc::testtools::splitCsvLine;
 std::string pointerOf(const std::string& column)
 {
   static const std::set<std::string> contactKeys{"half_width", "radius", "max_pressure", "stick_half_width",
-                                                 "stick_radius", "newton_iterations"};
+                                                 "stick_radius", "area", "stick_area", "newton_iterations"};
+  if (column == "step" || column == "time")
+    return "/load_step/" + column;
+  // reaction_<part>_<x|y|z> and prescribed_<part>_<component>
+  if (column.size() > 11 && column.rfind("reaction_", 0) == 0 && column[column.size() - 2] == '_')
+    return "/reactions/" + column.substr(9, column.size() - 11) + "/force/" +
+           std::to_string(column.back() - 'x');
+  if (column.rfind("prescribed_", 0) == 0 && column.find_last_of('_') > 11)
+    return "/load_step/prescribed/" + column.substr(11, column.find_last_of('_') - 11) + "/" +
+           column.substr(column.find_last_of('_') + 1);
   if (column == "cycle" || column == "elements" || column == "linear_solves")
     return "/" + column;
   if (column == "dofs")

@@ -27,7 +27,9 @@ Json contactCycles()
                {"oscillation", 0.0},     {"friction", 0.375}, {"contact_normal_signed", -1e-3},
                {"stress_energy_norm", 10.0}, {"relative", 0.05}, {"marked_elements", 17}};
   c0["contact"] = {{"force", {1.5, 108.25}},      {"half_width", 0.0625}, {"max_pressure", 900.5},
-                   {"stick_half_width", 0.03125}, {"newton_iterations", 4}};
+                   {"stick_half_width", 0.03125}, {"area", 0.125}, {"stick_area", 0.0625},
+                   {"newton_iterations", 4}};
+  c0["reactions"] = {{"Top", {{"type", "Displacement"}, {"force", {-1.5, -108.25}}}}};
   c0["nonlinear_iterations"] = 4;
   c0["linear_solves"] = 4;
   c0["linear_iterations"] = {{"per_solve", {10, 11, 12, 13}}, {"total", 46}};
@@ -42,12 +44,27 @@ TEUCHOS_UNIT_TEST(HistoryTable, ContactRunColumnsAndValues)
   const std::string text = sc::io::formatHistory(contactCycles(), 2, true);
   const std::string expected =
       "cycle,elements,dofs,eta,eta_relative,eta_volume,eta_asymmetry,eta_oscillation,eta_friction,"
-      "force_x,force_y,half_width,max_pressure,stick_half_width,newton_iterations,linear_solves,"
-      "krylov_iterations,seconds\n"
-      "0,390,6566,0.5,0.050000000000000003,0.25,0.125,0,0.375,1.5,108.25,0.0625,900.5,0.03125,4,4,46,1.875\n"
-      "1,700,,,,,,,,,,,,,,,,\n";
+      "force_x,force_y,half_width,max_pressure,stick_half_width,area,stick_area,newton_iterations,"
+      "reaction_Top_x,reaction_Top_y,linear_solves,krylov_iterations,seconds\n"
+      "0,390,6566,0.5,0.050000000000000003,0.25,0.125,0,0.375,1.5,108.25,0.0625,900.5,0.03125,"
+      "0.125,0.0625,4,-1.5,-108.25,4,46,1.875\n"
+      "1,700,,,,,,,,,,,,,,,,,,,,\n";
   out << text;
   TEST_EQUALITY(text, expected);
+}
+
+// Load steps (docs/output.md "history.csv"): the step, its time and the prescribed values of the
+// tables come after the cycle.
+TEUCHOS_UNIT_TEST(HistoryTable, LoadStepColumns)
+{
+  Json cycles = contactCycles();
+  cycles[0]["load_step"] = {{"step", 1}, {"time", 1.0}, {"prescribed", {{"Top", {0.0, -0.01}}}}};
+  cycles[1]["load_step"] = {{"step", 2}, {"time", 2.5}, {"prescribed", {{"Top", {0.004, -0.01}}}}};
+  const std::string text = sc::io::formatHistory(cycles, 2, true);
+  out << text;
+  TEST_ASSERT(text.rfind("cycle,step,time,prescribed_Top_0,prescribed_Top_1,elements,", 0) == 0);
+  TEST_ASSERT(text.find("\n0,1,1,0,-0.01,390,") != std::string::npos);
+  TEST_ASSERT(text.find("\n1,2,2.5,0.0040000000000000001,-0.01,700,") != std::string::npos);
 }
 
 TEUCHOS_UNIT_TEST(HistoryTable, ElasticityRun3DHasNoContactColumns)

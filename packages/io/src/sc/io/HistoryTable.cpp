@@ -64,17 +64,57 @@ CsvWriter::Value cell(const nlohmann::ordered_json& v)
 
 }  // namespace
 
+namespace {
+
+bool hasLoadSteps(const nlohmann::ordered_json& cycles)
+{
+  for (const auto& c : cycles)
+    if (c.contains("load_step"))
+      return true;
+  return false;
+}
+
+// The names under `key` (an object of objects) of the records, in order of first appearance:
+// the parts with reactions, or the parts with prescribed values per load step.
+std::vector<std::string> namesUnder(const nlohmann::ordered_json& cycles,
+                                    std::initializer_list<const char*> keys)
+{
+  std::vector<std::string> names;
+  for (const auto& c : cycles) {
+    const auto& node = at(c, keys);
+    if (!node.is_object())
+      continue;
+    for (const auto& [name, value] : node.items())
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        names.push_back(name);
+  }
+  return names;
+}
+
+}  // namespace
+
 std::vector<std::string> historyColumns(const nlohmann::ordered_json& cycles, int dim, bool contact)
 {
-  std::vector<std::string> columns{"cycle", "elements", "dofs", "eta", "eta_relative"};
+  std::vector<std::string> columns{"cycle"};
+  if (hasLoadSteps(cycles)) {
+    columns.insert(columns.end(), {"step", "time"});
+    for (const auto& part : namesUnder(cycles, {"load_step", "prescribed"}))
+      for (std::size_t i = 0; i < at(cycles.back(), {"load_step", "prescribed", part.c_str()}).size(); ++i)
+        columns.push_back("prescribed_" + part + "_" + std::to_string(i));
+  }
+  columns.insert(columns.end(), {"elements", "dofs", "eta", "eta_relative"});
   for (const auto& part : etaParts(cycles))
     columns.push_back("eta_" + part);
   if (contact) {
     for (int i = 0; i < dim; ++i)
       columns.push_back(std::string("force_") + "xyz"[i]);
     const std::string zone = dim == 2 ? "half_width" : "radius";
-    columns.insert(columns.end(), {zone, "max_pressure", "stick_" + zone, "newton_iterations"});
+    columns.insert(columns.end(),
+                   {zone, "max_pressure", "stick_" + zone, "area", "stick_area", "newton_iterations"});
   }
+  for (const auto& part : namesUnder(cycles, {"reactions"}))
+    for (int i = 0; i < dim; ++i)
+      columns.push_back("reaction_" + part + "_" + "xyz"[i]);
   columns.insert(columns.end(), {"linear_solves", "krylov_iterations", "seconds"});
   return columns;
 }
@@ -90,6 +130,13 @@ std::string formatHistory(const nlohmann::ordered_json& cycles, int dim, bool co
     CsvWriter::Row row(table.header().size());
     std::size_t i = 0;
     row[i++] = cell(at(c, {"cycle"}));
+    if (hasLoadSteps(cycles)) {
+      row[i++] = cell(at(c, {"load_step", "step"}));
+      row[i++] = cell(at(c, {"load_step", "time"}));
+      for (const auto& part : namesUnder(cycles, {"load_step", "prescribed"}))
+        for (std::size_t k = 0; k < at(cycles.back(), {"load_step", "prescribed", part.c_str()}).size(); ++k)
+          row[i++] = cell(at(c, {"load_step", "prescribed", part.c_str()}, static_cast<int>(k)));
+    }
     row[i++] = cell(at(c, {"elements"}));
     row[i++] = cell(at(c, {"dofs", "total"}));
     row[i++] = cell(at(c, {"eta", "total"}));
@@ -102,8 +149,13 @@ std::string formatHistory(const nlohmann::ordered_json& cycles, int dim, bool co
       row[i++] = cell(at(c, {"contact", zone.c_str()}));
       row[i++] = cell(at(c, {"contact", "max_pressure"}));
       row[i++] = cell(at(c, {"contact", ("stick_" + zone).c_str()}));
+      row[i++] = cell(at(c, {"contact", "area"}));
+      row[i++] = cell(at(c, {"contact", "stick_area"}));
       row[i++] = cell(at(c, {"contact", "newton_iterations"}));
     }
+    for (const auto& part : namesUnder(cycles, {"reactions"}))
+      for (int k = 0; k < dim; ++k)
+        row[i++] = cell(at(c, {"reactions", part.c_str(), "force"}, k));
     row[i++] = cell(at(c, {"linear_solves"}));
     row[i++] = cell(at(c, {"linear_iterations", "total"}));
     // The cycle's phases as its progress line adds them: writing the checkpoint comes after the
