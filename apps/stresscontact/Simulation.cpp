@@ -48,8 +48,11 @@
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "ContactFields.hpp"
+#include "CycleResults.hpp"
 #include "DeckParameters.hpp"
+#include "FieldWriter.hpp"
 #include "ForceBalance.hpp"
+#include "RunRecorder.hpp"
 
 namespace sc::app {
 
@@ -75,6 +78,13 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
     if (comm_->getRank() == 0)
       std::cerr << "stresscontact: warning: " << w << std::endl;
   }
+  // The frictionless Hertz scenes are compared with Hertz's values for their computed load
+  // (contact::compareWithHertz).
+  if (const auto& meshList = params_->sublist("Mesh");
+      boundaryConditions_.hasContact() && !contact_.needsFriction() &&
+      (meshList.get<std::string>("Source") == "Half disc" ||
+       meshList.get<std::string>("Source") == "Half ball"))
+    hertzRadius_ = meshList.get<double>("Radius");
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);
@@ -345,12 +355,15 @@ void Simulation::refine(const adapt::Marking& marking)
                                  std::to_string(mesh_->numElements()) + " elements");
 }
 
-void Simulation::solve(int /*cycle*/)
+void Simulation::solve(int cycle)
 {
+  results_ = std::make_unique<CycleResults>();
+  results_->cycle = cycle;
   if (boundaryConditions_.hasContact())
     solveContact();
   else
     solveElasticity();
+  recordSolve();
 }
 
 void Simulation::setupElasticity()
@@ -479,49 +492,54 @@ void Simulation::solveContact()
   solved_ = true;
 }
 
-void Simulation::writeContactTable(int cycle)
+void Simulation::recordSolve()
 {
-  if (!output_.writeContactCsv || !contactSolver_ || !solved_)
+  CycleResults& r = *results_;
+  r.solved = solved_;
+  if (!solved_)
     return;
-  auto t = timers_.scope("output");
-  const int d = problem_.dimension;
-  const auto header = contact::csvColumns(d);
-  io::CsvWriter csv(header);
-  for (const auto& p : contactSolver_->points()) {
-    // Filled by index, not push_back: GCC 12 warns (-Wmaybe-uninitialized, a false positive)
-    // about moving std::variant<double, std::string> when a vector of them grows.
-    io::CsvWriter::Row row(header.size());
-    std::size_t col = 0;
-    for (double v : contact::csvValues(p, d))
-      row[col++] = v;
-    row[col] = contact::toString(p.status);
-    csv.addRow(std::move(row));
+  r.dofs = {space_->numStressDofs(), space_->numDisplacementDofs(), space_->numRotationDofs(),
+            space_->numGlobalDofs()};
+  LinearSolveRecord& ls = r.linearSolve.emplace();
+  ls.name = solver_->name();
+  ls.iterative = solver_->isIterative();
+  ls.last = solver_->lastSolveStats();
+  ls.symbolicReuses = ls.last.symbolicReuses + symbolicReusesBefore_;
+  ls.preconditionerSetups = ls.last.preconditionerSetups + preconditionerSetupsBefore_;
+  // One linear solve per Newton step (1 without contact).
+  ls.solves = contactSolver_ ? contactSolver_->statistics().newtonIterations : 1;
+  ls.iterationsPerSolve = linearIterations_;
+  if (contactSolver_) {
+    ContactRecord& c = r.contact.emplace();
+    c.points = contactSolver_->points();
+    c.statistics = contactSolver_->statistics();
+    c.summary = contact::summarizeContact(c.points, problem_.dimension, contact_.obstacleNormal,
+                                          *comm_, 1e-12 * 2.0 * material_.shearModulus());
+    if (hertzRadius_)
+      c.hertz = contact::compareWithHertz(problem_.dimension, c.summary, material_, *hertzRadius_);
   }
-  char name[64];
-  std::snprintf(name, sizeof(name), "/contact_cycle%d.csv", cycle);
-  csv.writeGathered(*comm_, output_.directory + name);
 }
 
 adapt::CycleEstimate Simulation::estimate(int /*cycle*/)
 {
   estimateError();
+  collectResults();
+  const auto& estimate = results_->estimate;
   adapt::CycleEstimate e;
   e.dofs = solved_ ? space_->numGlobalDofs() : 0;
   e.numElements = mesh_->numElements();
-  if (estimate_) {
+  if (estimate) {
     e.available = true;
-    e.eta = estimate_->total();
-    e.norm = estimate_->stressEnergyNorm;
+    e.eta = estimate->total();
+    e.norm = estimate->stressEnergyNorm;
     e.ownedElements = space_->ownedElements();
-    e.indicators = estimate_->indicators;
+    e.indicators = estimate->indicators;
   }
   return e;
 }
 
 void Simulation::estimateError()
 {
-  estimate_.reset();
-  stressEnergyError_ = -1.0;
   if (!solved_)
     return;
   const assembly::ElasticityData data{material_, boundaryConditions_, exact_.get(), bodyForce_};
@@ -535,22 +553,75 @@ void Simulation::estimateError()
   }
   {
     auto t = timers_.scope("estimate");
-    estimate_ = std::make_unique<estimator::ErrorEstimate>(estimator_->estimateReconstructed(*solution_, data));
+    results_->estimate = estimator_->estimateReconstructed(*solution_, data);
   }
+  const estimator::ErrorEstimate& estimate = *results_->estimate;
   std::ostringstream os;
-  os << space_->numGlobalDofs() << " DOFs, eta = " << estimate_->total() << " (";
-  for (std::size_t i = 0; i < estimate_->parts.size(); ++i)
-    os << (i ? ", " : "") << estimate_->parts[i].first << " " << std::sqrt(estimate_->parts[i].second);
+  os << space_->numGlobalDofs() << " DOFs, eta = " << estimate.total() << " (";
+  for (std::size_t i = 0; i < estimate.parts.size(); ++i)
+    os << (i ? ", " : "") << estimate.parts[i].first << " " << std::sqrt(estimate.parts[i].second);
   // A zero solution (zero load) has η = 0 and ‖A^{1/2}σ_h‖ = 0: its relative estimate is 0.
   const double relative =
-      estimate_->stressEnergyNorm > 0.0 ? estimate_->total() / estimate_->stressEnergyNorm : 0.0;
+      estimate.stressEnergyNorm > 0.0 ? estimate.total() / estimate.stressEnergyNorm : 0.0;
   os << "), eta / |A^1/2 sigma_h| = " << relative;
   if (exact_) {
     auto t = timers_.scope("errors");
-    stressEnergyError_ = assembly::computeStressEnergyError(*assembler_, *solution_, *exact_, material_, *comm_);
-    os << ", efficiency index " << estimate_->total() / stressEnergyError_;
+    results_->stressEnergyError =
+        assembly::computeStressEnergyError(*assembler_, *solution_, *exact_, material_, *comm_);
+    os << ", efficiency index " << estimate.total() / results_->stressEnergyError;
   }
   progress_.report("estimate", os.str());
+  if (exact_) {
+    auto t = timers_.scope("errors");
+    results_->errors = assembly::computeErrors(*assembler_, *solution_, *exact_, *comm_);
+  }
+}
+
+void Simulation::collectResults()
+{
+  CycleResults& r = *results_;
+  if (solved_) {
+    // Reactions and the force balance, with the contact force of the contact record.
+    std::array<double, 3> contactForce{0.0, 0.0, 0.0};
+    if (r.contact)
+      std::copy(r.contact->summary.force.begin(),
+                r.contact->summary.force.begin() + problem_.dimension, contactForce.begin());
+    r.forces = computeCycleForces(
+        *assembler_, *solution_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
+        r.contact ? &contactForce : nullptr, output_.momentPoint, *comm_);
+  }
+  // The measure of the discrete domain: with curved elements, that of their quadratic maps.
+  const double localMeasure = disc::ownedMeasure(*space_);
+  double measure = 0.0;
+  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 1, &localMeasure, &measure);
+  const auto* curved = space_->curvedElementsPtr().get();
+  r.mesh.vertices = mesh_->numVertices();
+  r.mesh.elements = mesh_->numElements();
+  r.mesh.measure = measure;
+  r.mesh.geometryOrder = space_->geometryOrder();
+  r.mesh.curvedElements = curved ? curved->numCurvedElements() : 0;
+  r.mesh.minAngleDeg = mesh_->minAngleDeg();
+  r.mesh.elementsPerRank.assign(comm_->getSize(), 0);
+  for (int o : elementOwner_)
+    ++r.mesh.elementsPerRank[o];
+
+  if (!writer_)
+    return;
+  auto t = timers_.scope("output");
+  CycleFields& f = r.fields.emplace();
+  f.vertices = mesh::vertexOwnership(*mesh_, elementOwner_, comm_->getRank(), comm_->getSize());
+  if (r.estimate) {
+    for (int v : f.vertices.owned) {
+      double u[3];
+      estimator_->reconstruction().vertexValue(v, u);
+      f.reconstructedDisplacement.insert(f.reconstructedDisplacement.end(), u,
+                                         u + problem_.dimension);
+    }
+  }
+  if (solved_)
+    f.averages = assembly::computeCellAverages(*assembler_, *solution_);
+  if (r.contact)  // the contact points with their point values (ContactFields.hpp)
+    f.contactPoints = contactPointGrid(*contactSolver_, problem_.dimension, discretization_.degree);
 }
 
 adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marking) const
@@ -585,10 +656,16 @@ adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marki
 
 void Simulation::output(int cycle, const adapt::Marking& marking, const std::string& stopReason)
 {
-  writeContactTable(cycle);
-  writeFields(cycle);
+  if (output_.writeContactCsv && results_->contact) {
+    auto t = timers_.scope("output");
+    recorder_->writeContactTable(*results_);
+  }
+  if (writer_) {
+    auto t = timers_.scope("output");
+    writeCycleFields(*writer_, *mesh_, elementOwner_, comm_->getRank(), *results_);
+  }
   killIfAsked(cycle);
-  recordCycle(cycle, marking, stopReason);
+  recorder_->recordCycle(*results_, marking, stopReason);
   lastCycle_ = cycle;
   if (loadSteps_.given) {
     // Load steps (docs/output.md): the step and its time, and the 2D stick zone's two ends
@@ -605,16 +682,16 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
       prescribed["body_force"] = bodyForce_.value;
     if (!loadSteps_.obstacleDisplacement.empty())
       prescribed["obstacle"] = loadSteps_.obstacleDisplacementAt(loadStep_, problem_.dimension);
-    if (solved_ && contactSolver_ && problem_.dimension == 2) {
-      const auto cs = contact::summarizeContact(contactSolver_->points(), 2, contact_.obstacleNormal,
-                                                *comm_, 1e-12 * 2.0 * material_.shearModulus());
+    if (results_->contact && problem_.dimension == 2) {
+      const auto& cs = results_->contact->summary;
       c["contact"]["stick_zone_ends"] = {cs.center[0] + cs.stickZoneEnds[0], cs.center[0] + cs.stickZoneEnds[1]};
     }
   }
-  recordCost();
-  summary_->write();
-  io::writeHistory(*comm_, output_.directory, summary_->json()["cycles"], problem_.dimension,
-                   boundaryConditions_.hasContact());
+  const auto timings = timers_.cycleTimings();
+  const auto memory = timers_.peakMemory();
+  timers_.nextCycle();
+  recorder_->recordCost(*results_, timings, memory);
+  recorder_->write();
 }
 
 void Simulation::checkpoint(int cycle, const adapt::Marking& marking)
@@ -640,288 +717,6 @@ void Simulation::checkScene()
   io::checkOutputDirectory(output_.directory, *comm_);
   io::checkRunFileNamesAreFree(output_.directory, output_.baseName, *comm_);
   io::checkOutputLock(output_.directory, *comm_);
-}
-
-void Simulation::recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason)
-{
-  nlohmann::ordered_json& c = summary_->addCycle(cycle);
-  c["elements"] = mesh_->numElements();
-  if (solved_ && contactSolver_) {
-    const int d = problem_.dimension;
-    const auto cs = contact::summarizeContact(contactSolver_->points(), d, contact_.obstacleNormal,
-                                              *comm_, 1e-12 * 2.0 * material_.shearModulus());
-    const auto& st = contactSolver_->statistics();
-    std::vector<double> force(cs.force.begin(), cs.force.begin() + d);
-    c["contact"] = {{"force", force},
-                    {d == 2 ? "half_width" : "radius", cs.zoneSize},
-                    {"max_pressure", cs.maxPressure},
-                    {"min_pressure", cs.minPressure},
-                    {"area", cs.area},
-                    {"stick_area", cs.stickArea},
-                    {d == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
-                    {d == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
-                    {d == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
-                     cs.equivalentStickZoneSize},
-                    {"points", {{"free", cs.numFree}, {"stick", cs.numStick}, {"slip", cs.numSlip}}},
-                    {"newton_iterations", st.newtonIterations},
-                    {"cycle_remedies", st.remedies},
-                    {"fixed_point_iterations", st.fixedPointIterations}};
-    // Hertz's values from the computed load for the Hertz scenes without friction (Johnson
-    // 1985; contact/Hertz.hpp): the ratios say how close the run is.
-    const auto& meshList = params_->sublist("Mesh");
-    const std::string source = meshList.get<std::string>("Source");
-    if ((source == "Half disc" || source == "Half ball") && !contact_.needsFriction() &&
-        force[d - 1] > 0.0) {
-      // Plane stress: E* = E, Hertz's plane-strain E/(1 − ν²) at ν = 0.
-      const auto h = contact::hertzFromLoad(d, force[d - 1], material_.youngModulus,
-                                            material_.planeStress ? 0.0 : material_.poissonRatio,
-                                            meshList.get<double>("Radius"));
-      c["contact"]["hertz"] = {{d == 2 ? "half_width" : "radius", h.halfWidth},
-                               {"max_pressure", h.maxPressure},
-                               {d == 2 ? "half_width_ratio" : "radius_ratio",
-                                (d == 2 ? cs.zoneSize : cs.equivalentZoneSize) / h.halfWidth},
-                               {"max_pressure_ratio", cs.maxPressure / h.maxPressure}};
-    }
-    c["nonlinear_iterations"] = st.newtonIterations;
-    std::ostringstream os;
-    os << "force (" << force[0] << ", " << force[1] << (d == 3 ? ", " + std::to_string(force[2]) : "")
-       << "), " << (d == 2 ? "half-width " : "radius ") << cs.zoneSize << " (from the area "
-       << cs.equivalentZoneSize << "), max pressure " << cs.maxPressure << ", stick "
-       << cs.stickZoneSize << " (" << cs.numStick << " stick, " << cs.numSlip << " slip points)";
-    progress_.report("contact", os.str());
-  }
-  if (estimate_) {
-    auto& eta = c["eta"];
-    eta["total"] = estimate_->total();
-    for (const auto& p : estimate_->parts)
-      eta[p.first] = std::sqrt(p.second);
-    for (const auto& p : estimate_->diagnostics)
-      eta[p.first] = p.second;  // signed, in the units of η² (not a root)
-    eta["stress_energy_norm"] = estimate_->stressEnergyNorm;
-    eta["relative"] =
-        estimate_->stressEnergyNorm > 0.0 ? estimate_->total() / estimate_->stressEnergyNorm : 0.0;
-    if (stressEnergyError_ >= 0.0) {
-      eta["stress_energy_error"] = stressEnergyError_;
-      eta["efficiency_index"] = estimate_->total() / stressEnergyError_;
-    }
-    if (!marking.uniform && stopReason.empty())
-      eta["marked_elements"] = marking.elements.size();
-  }
-  if (!stopReason.empty())
-    c["stop_reason"] = stopReason;
-  if (solved_) {
-    // Reactions and the force balance, with the contact force recorded above (docs/output.md).
-    std::array<double, 3> contactForce{0.0, 0.0, 0.0};
-    if (contactSolver_)
-      for (std::size_t i = 0; i < c["contact"]["force"].size(); ++i)
-        contactForce[i] = c["contact"]["force"][i].get<double>();
-    const auto forces = computeCycleForces(
-        *assembler_, *solution_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
-        contactSolver_ ? &contactForce : nullptr, output_.momentPoint, *comm_);
-    c["reactions"] = forces.reactions;
-    c["force_balance"] = forces.balance;
-    c["dofs"] = {{"stress", space_->numStressDofs()},
-                 {"displacement", space_->numDisplacementDofs()},
-                 {"rotation", space_->numRotationDofs()},
-                 {"total", space_->numGlobalDofs()}};
-    const auto& st = solver_->lastSolveStats();
-    // One linear solve per Newton step (1 without contact); Krylov iterations per solve.
-    c["linear_solves"] = contactSolver_ ? contactSolver_->statistics().newtonIterations : 1;
-    if (solver_->isIterative()) {
-      long long total = 0;
-      for (int it : linearIterations_)
-        total += it;
-      c["linear_iterations"] = {{"per_solve", linearIterations_}, {"total", total}};
-    } else {
-      c["linear_iterations"] = nullptr;
-    }
-    c["linear_solver"] = {{"type", solver_->name()},
-                          {"relative_residual", st.relativeResidual},
-                          {"symbolic_reuses", st.symbolicReuses + symbolicReusesBefore_},
-                          {"factor_nonzeros", st.factorNonzeros}};
-    if (solver_->isIterative()) {
-      c["linear_solver"]["preconditioner_setups"] = st.preconditionerSetups + preconditionerSetupsBefore_;
-      c["linear_solver"]["preconditioner_seconds_last"] = st.preconditionerSeconds;
-    }
-    if (exact_) {
-      auto t = timers_.scope("errors");
-      const auto e = assembly::computeErrors(*assembler_, *solution_, *exact_, *comm_);
-      c["errors"] = {{"stress_l2", e.stress},
-                     {"stress_div_l2", e.stressDiv},
-                     {"displacement_l2", e.displacement},
-                     {"rotation_l2", e.rotation},
-                     {"stress_l2_relative", e.stress / e.stressNorm},
-                     {"displacement_l2_relative", e.displacement / e.displacementNorm}};
-      std::ostringstream os;
-      os << "|σ−σh| = " << e.stress << ", |div(σ−σh)| = " << e.stressDiv << ", |u−uh| = "
-         << e.displacement << ", |θ−θh| = " << e.rotation;
-      progress_.report("errors", os.str());
-    }
-  }
-  // The measure of the discrete domain: with curved elements, that of their quadratic maps.
-  const double localMeasure = disc::ownedMeasure(*space_);
-  double measure = 0.0;
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 1, &localMeasure, &measure);
-  const auto* curved = space_->curvedElementsPtr().get();
-  c["mesh"] = {{"vertices", mesh_->numVertices()},
-               {"elements", mesh_->numElements()},
-               {"measure", measure},
-               {"geometry_order", space_->geometryOrder()},
-               {"curved_elements", curved ? curved->numCurvedElements() : 0},
-               {"min_angle_deg", mesh_->minAngleDeg()}};
-  std::vector<long long> owned(comm_->getSize(), 0);
-  for (int o : elementOwner_)
-    ++owned[o];
-  c["mesh"]["elements_per_rank"] = owned;
-}
-
-void Simulation::recordCost()
-{
-  const auto timings = timers_.cycleTimings();
-  const auto memory = timers_.peakMemory();
-  timers_.nextCycle();
-  auto& c = summary_->currentCycle();
-  c["timings"] = timings;
-  c["memory"] = {{"peak_rss_max_mb", memory.maxMB}, {"peak_rss_sum_mb", memory.sumMB}};
-  // The cycle's one-line summary: size, η, Newton steps, seconds per phase, peak memory.
-  std::ostringstream os;
-  os << std::setprecision(4);
-  if (solved_)
-    os << space_->numGlobalDofs() << " DOFs, ";
-  if (estimate_)
-    os << "eta " << estimate_->total() << ", ";
-  if (solved_ && contactSolver_)
-    os << contactSolver_->statistics().newtonIterations << " Newton steps, ";
-  os << forcesBrief(c);
-  os << std::fixed << std::setprecision(3);
-  double total = 0.0;
-  for (const auto& [phase, seconds] : timings)
-    total += seconds;
-  os << "seconds " << total << " (";
-  bool first = true;
-  for (const char* phase : {"solve", "reconstruct", "estimate", "mark", "refine", "transfer", "output"}) {
-    const auto it = timings.find(phase);
-    if (it == timings.end())
-      continue;
-    os << (first ? "" : ", ") << phase << " " << it->second;
-    first = false;
-  }
-  os << "), peak memory " << std::setprecision(0) << memory.maxMB << " MB";
-  if (comm_->getSize() > 1)
-    os << " per rank, " << memory.sumMB << " MB on all " << comm_->getSize() << " ranks";
-  progress_.report("cycle summary", os.str());
-}
-
-void Simulation::writeFields(int cycle)
-{
-  if (!writer_)
-    return;
-  auto t = timers_.scope("output");
-  const int rank = comm_->getRank(), dim = mesh_->dim();
-  const std::size_t nv = mesh_->numVertices(), ne = mesh_->numElements();
-  const int nodesPerElement = dim + 1;
-
-  // Each vertex is owned by the lowest rank among its elements' owners; vertices are renumbered
-  // so that every rank's owned vertices form one contiguous block, as the writer requires.
-  std::vector<int> vertexOwner(nv, comm_->getSize());
-  for (std::size_t e = 0; e < ne; ++e) {
-    const int* ev = mesh_->elementVertices(static_cast<int>(e));
-    for (int i = 0; i < nodesPerElement; ++i)
-      vertexOwner[ev[i]] = std::min(vertexOwner[ev[i]], elementOwner_[e]);
-  }
-  std::vector<long long> newId(nv);
-  {
-    std::vector<std::size_t> order(nv);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return vertexOwner[a] < vertexOwner[b]; });
-    for (std::size_t i = 0; i < nv; ++i)
-      newId[order[i]] = static_cast<long long>(i);
-  }
-
-  io::GridPiece domain("domain", dim == 2 ? io::CellType::Triangle : io::CellType::Tetrahedron, dim);
-  const auto& x = mesh_->coordinates();
-  std::vector<std::size_t> ownedVertices;
-  for (std::size_t v = 0; v < nv; ++v)
-    if (vertexOwner[v] == rank)
-      ownedVertices.push_back(v);
-  std::sort(ownedVertices.begin(), ownedVertices.end(),
-            [&](std::size_t a, std::size_t b) { return newId[a] < newId[b]; });
-  for (std::size_t v : ownedVertices)
-    for (int d = 0; d < dim; ++d)
-      domain.coordinates.push_back(x[v * dim + d]);
-  std::vector<double> measure;
-  for (std::size_t e = 0; e < ne; ++e) {
-    if (elementOwner_[e] != rank)
-      continue;
-    const int* ev = mesh_->elementVertices(static_cast<int>(e));
-    for (int i = 0; i < nodesPerElement; ++i)
-      domain.connectivity.push_back(newId[ev[i]]);
-    measure.push_back(mesh_->elementMeasure(static_cast<int>(e)));
-  }
-  domain.addCellField("element_measure", io::FieldKind::Scalar, std::move(measure));
-  if (estimate_) {
-    // η_T of the owned elements (same order as the loop above: ownedElements() is ascending),
-    // and u^R at the owned vertices as a point field (ParaView: Warp By Vector).
-    std::vector<double> etaT;
-    for (double v : estimate_->indicators)
-      etaT.push_back(std::sqrt(v));
-    domain.addCellField("eta", io::FieldKind::Scalar, std::move(etaT));
-    std::vector<double> uR;
-    for (std::size_t v : ownedVertices) {
-      double u[3];
-      estimator_->reconstruction().vertexValue(static_cast<int>(v), u);
-      uR.insert(uR.end(), u, u + dim);
-    }
-    domain.addPointField("reconstructed_displacement", io::FieldKind::Vector, std::move(uR));
-  }
-  if (solved_) {
-    // Cell averages, in the order of the rank's owned elements (the loop above).
-    auto avg = assembly::computeCellAverages(*assembler_, *solution_);
-    domain.addCellField("stress", io::FieldKind::Tensor, std::move(avg.stress));
-    domain.addCellField("von_mises", io::FieldKind::Scalar, std::move(avg.vonMises));
-    domain.addCellField("pressure", io::FieldKind::Scalar, std::move(avg.pressure));
-    domain.addCellField("displacement", io::FieldKind::Vector, std::move(avg.displacement));
-    domain.addCellField("rotation", dim == 2 ? io::FieldKind::Scalar : io::FieldKind::Vector,
-                        std::move(avg.rotation));
-  }
-
-  io::GridPiece boundary("boundary", dim == 2 ? io::CellType::Line : io::CellType::Triangle, dim);
-  boundary.geometryFrom = "domain";
-  std::vector<int> boundaryId;
-  for (int f : mesh_->boundaryFaces()) {
-    if (elementOwner_[mesh_->faceElements(f)[0]] != rank)
-      continue;
-    const int* fv = mesh_->faceVertices(f);
-    for (int i = 0; i < dim; ++i)
-      boundary.connectivity.push_back(newId[fv[i]]);
-    boundaryId.push_back(mesh_->faceBoundaryId(f));
-  }
-  if (contactSolver_) {
-    // Mean contact pressure −σ_N and tangential traction of each contact face's points.
-    const auto means = contact::faceMeans(contactSolver_->points());
-    std::vector<double> pressure, shear;
-    for (int f : mesh_->boundaryFaces()) {
-      if (elementOwner_[mesh_->faceElements(f)[0]] != rank)
-        continue;
-      auto it = means.find(f);
-      pressure.push_back(it == means.end() ? 0.0 : it->second.pressure);
-      shear.push_back(it == means.end() ? 0.0 : it->second.shear);
-    }
-    boundary.addCellField("contact_pressure", io::FieldKind::Scalar, std::move(pressure));
-    boundary.addCellField("tangential_traction", io::FieldKind::Scalar, std::move(shear));
-  }
-  boundary.addCellField("boundary_id", std::move(boundaryId));
-  std::map<int, std::string> names;
-  const auto& bn = mesh_->boundaryNames();
-  for (std::size_t i = 0; i < bn.size(); ++i)
-    names[static_cast<int>(i)] = bn[i];
-  boundary.setBoundaryNames(names);
-
-  std::vector<io::GridPiece> grids{domain, boundary};
-  if (contactSolver_ && solved_)  // the contact points with their point values (ContactFields.hpp)
-    grids.push_back(contactPointGrid(*contactSolver_, dim, discretization_.degree));
-  writer_->writeStep(cycle, grids);
 }
 
 void Simulation::run()
@@ -963,6 +758,8 @@ void Simulation::run()
   summary_->json()["deck"] = deckPath_;
   summary_->json()["phases_missing"] = phasesMissing_;
   summary_->json()["warnings"] = warnings_;
+  recorder_ = std::make_unique<RunRecorder>(*comm_, progress_, *summary_, output_.directory,
+                                            problem_.dimension, boundaryConditions_.hasContact());
   if (output_.writeXdmf)
     writer_ = std::make_unique<io::XdmfWriter>(comm_, output_.directory, output_.baseName);
   if (firstCycle > 0)

@@ -11,6 +11,7 @@
 // any marking. summary.json keeps the list "phases_missing" for phases this build cannot run;
 // it is empty now (a phase that is missing is reported there, never faked).
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,7 @@ class ExactSolution;
 }
 namespace sc::estimator {
 class ErrorEstimator;
-struct ErrorEstimate;
-}  // namespace sc::estimator
+}
 namespace sc::adapt {
 class AdaptiveLoop;
 }
@@ -68,6 +68,9 @@ struct ContactPoint;
 }
 
 namespace sc::app {
+
+struct CycleResults;
+class RunRecorder;
 
 /// A prescribed displacement above this fraction of the body's size (bounding-box diagonal)
 /// draws a small-strain warning.
@@ -100,14 +103,18 @@ private:
   /// Bisect the marked elements (or every element, uniformly), then compute the parents of the
   /// new boundary faces for the contact state's transfer and forget the refinement history.
   void refine(const adapt::Marking& marking) override;
-  /// Partition, set up, assemble and solve (elasticity, or the contact Newton loop).
+  /// Partition, set up, assemble and solve (elasticity, or the contact Newton loop); starts the
+  /// cycle's results_ with the solver's and the contact's record.
   void solve(int cycle) override;
-  /// Reconstruction and η (η_CF with contact); the DOFs, η, ‖A^{1/2}σ_h‖ and η_T² for the loop.
+  /// Reconstruction and η (η_CF with contact), the errors against an exact solution, then the
+  /// rest of results_ (forces, mesh record, fields); the DOFs, η, ‖A^{1/2}σ_h‖ and η_T² for the
+  /// loop.
   adapt::CycleEstimate estimate(int cycle) override;
   /// The next mesh's DOFs and bytes against the memory limit (estimated from the marked
   /// elements and the current DOFs per element); no limit when none is active.
   adapt::NextMeshForecast forecastNextMesh(const adapt::Marking& marking) const override;
-  /// The contact CSV, the fields (XDMF), the cycle's summary record and cost, summary.json.
+  /// results_ into the contact CSV, the fields (XDMF), the cycle's summary record and cost,
+  /// summary.json and history.csv.
   void output(int cycle, const adapt::Marking& marking, const std::string& stopReason) override;
   /// checkpoint.h5, timed into summary.json's "checkpoint" phase.
   void checkpoint(int cycle, const adapt::Marking& marking) override;
@@ -125,15 +132,15 @@ private:
   /// What Linear Solver/Type = Auto decides on, for a system of `dofs` unknowns.
   solvers::ProblemSize autoProblem(long long dofs) const;
   void solveContact();
-  /// The reconstruction and estimate of the cycle (estimate_; none if nothing was solved), and
-  /// the error against the exact solution when there is one.
+  /// The solved cycle's DOFs, linear solver and contact state (with the Hertz comparison) into
+  /// *results_.
+  void recordSolve();
+  /// The reconstruction and estimate of the cycle (none if nothing was solved), and the errors
+  /// against the exact solution when there is one, into results_.
   void estimateError();
-  void writeFields(int cycle);
-  /// The contact CSV of the cycle (contact_cycle<N>.csv): one row per contact point.
-  void writeContactTable(int cycle);
-  void recordCycle(int cycle, const adapt::Marking& marking, const std::string& stopReason);
-  /// The cycle's timings and peak memory into summary.json, and its one-line progress summary.
-  void recordCost();
+  /// The reactions and force balance, the mesh record and (with XDMF output) the fields of the
+  /// cycle into results_.
+  void collectResults();
 
   // Checkpoint/restart (SimulationCheckpoint.cpp; docs/adaptivity.md "Checkpoint and restart").
   /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5 with the
@@ -168,6 +175,9 @@ private:
   /// The loop of the load steps after the first (Load steps/Cycles per later step cycles).
   std::unique_ptr<adapt::AdaptiveLoop> laterStepLoop_;
   int lastCycle_ = -1;  ///< the last cycle output (numbered through the load steps)
+  /// The frictionless Hertz scenes (Mesh/Source = Half disc or Half ball): their radius, for the
+  /// comparison with Hertz's values; none otherwise.
+  std::optional<double> hertzRadius_;
   core::DiscretizationSettings discretization_;
   estimator::EstimatorSettings estimatorSettings_;
   adapt::AdaptivitySettings adaptivity_;
@@ -206,8 +216,9 @@ private:
 
   // Estimate of the cycle.
   std::unique_ptr<estimator::ErrorEstimator> estimator_;
-  std::unique_ptr<estimator::ErrorEstimate> estimate_;
-  double stressEnergyError_ = -1.0;  ///< ‖A^{1/2}(σ − σ_h)‖ when the exact solution is known
+
+  /// What the cycle produced, for the output step (started by solve, completed by estimate).
+  std::unique_ptr<CycleResults> results_;
 
   // Contact (a boundary of Type Contact): the active-set solver of the cycle and the points of
   // the previous cycle (nested iteration: the next cycle starts from their state).
@@ -221,6 +232,7 @@ private:
   bool contactHoldsBody_ = false;
 
   std::unique_ptr<io::RunSummary> summary_;
+  std::unique_ptr<RunRecorder> recorder_;  ///< records results_ into summary_ and the CSVs
   std::unique_ptr<io::XdmfWriter> writer_;
 
   // Restart: the directory, the checkpoint read from it, and the linear solver's counts before

@@ -14,6 +14,7 @@
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
+#include <sc/contact/Hertz.hpp>
 #include <sc/contact/Obstacle.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/FaceDofPoints.hpp>
@@ -670,6 +671,45 @@ TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
       TEST_ASSERT(std::string(e.what()).find("give a plane through the body") != std::string::npos);
     }
   }
+}
+
+// The comparison the application records in summary.json ("hertz"): Johnson's formulas by hand
+// for a load P = 2 on R = 0.5, E = 3, ν = 0.25 (E* = 3.2), against a zone of a = 0.9 a_H and
+// p_max = 1.1 p_0.
+TEUCHOS_UNIT_TEST(Hertz, ComparisonWithTheComputedLoad)
+{
+  sc::core::Material material;
+  material.youngModulus = 3.0;
+  material.poissonRatio = 0.25;
+  const double P = 2.0, R = 0.5, estar = 3.0 / (1.0 - 0.0625);
+  const double a2 = std::sqrt(4.0 * P * R / (M_PI * estar)), p2 = 2.0 * P / (M_PI * a2);
+  const double a3 = std::cbrt(3.0 * P * R / (4.0 * estar)), p3 = 3.0 * P / (2.0 * M_PI * a3 * a3);
+  for (int dim : {2, 3}) {
+    const double a = dim == 2 ? a2 : a3, p0 = dim == 2 ? p2 : p3;
+    sc::contact::ContactSummary s;
+    s.force[dim - 1] = P;
+    s.force[0] = 7.0;  // a tangential force does not enter
+    // 2D compares the outermost half-width, 3D the equivalent radius √(A/π).
+    s.zoneSize = dim == 2 ? 0.9 * a : 5.0;
+    s.equivalentZoneSize = dim == 2 ? 5.0 : 0.9 * a;
+    s.maxPressure = 1.1 * p0;
+    const auto c = sc::contact::compareWithHertz(dim, s, material, R);
+    TEST_ASSERT(c.has_value());
+    TEST_FLOATING_EQUALITY(c->reference.halfWidth, a, 1e-14);
+    TEST_FLOATING_EQUALITY(c->reference.maxPressure, p0, 1e-14);
+    TEST_FLOATING_EQUALITY(c->zoneSizeRatio, 0.9, 1e-14);
+    TEST_FLOATING_EQUALITY(c->maxPressureRatio, 1.1, 1e-14);
+    // No comparison when the load does not press.
+    s.force[dim - 1] = 0.0;
+    TEST_ASSERT(!sc::contact::compareWithHertz(dim, s, material, R).has_value());
+  }
+  // Plane stress (2D): E* = E.
+  material.planeStress = true;
+  sc::contact::ContactSummary s;
+  s.force[1] = P;
+  s.zoneSize = 1.0;
+  const auto c = sc::contact::compareWithHertz(2, s, material, R);
+  TEST_FLOATING_EQUALITY(c->reference.halfWidth, std::sqrt(4.0 * P * R / (M_PI * 3.0)), 1e-14);
 }
 
 #endif  // !SC_HERTZ_3D

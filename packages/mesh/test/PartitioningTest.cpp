@@ -97,6 +97,44 @@ TEUCHOS_UNIT_TEST(Partitioning, OwnedAndGhostElementsPerRank)
   }
 }
 
+// The vertex ownership the fields' writer uses: each vertex owned by the lowest owner among its
+// elements (checked against a direct scan of the elements), the numbering a permutation in which
+// every rank's vertices form one block, ranks in order, vertex order kept within a block.
+TEUCHOS_UNIT_TEST(Partitioning, VertexOwnershipInRankBlocks)
+{
+  const auto& m = *testMesh();
+  for (int nparts : {1, 3}) {
+    const auto owner = partitionElements(m, nparts);
+    std::vector<int> lowest(m.numVertices(), nparts);
+    for (int e = 0; e < m.numElements(); ++e)
+      for (int i = 0; i <= m.dim(); ++i) {
+        const int v = m.elementVertices(e)[i];
+        lowest[v] = std::min(lowest[v], owner[e]);
+      }
+    std::vector<int> blockStart(nparts + 1, 0);
+    for (int v = 0; v < m.numVertices(); ++v)
+      ++blockStart[lowest[v] + 1];
+    for (int r = 0; r < nparts; ++r)
+      blockStart[r + 1] += blockStart[r];
+    for (int rank = 0; rank < nparts; ++rank) {
+      const auto o = vertexOwnership(m, owner, rank, nparts);
+      TEST_ASSERT(o.owner == lowest);
+      std::vector<char> seen(m.numVertices(), 0);
+      for (long long n : o.number) {
+        TEST_ASSERT(n >= 0 && n < m.numVertices() && !seen[n]);
+        seen[n] = 1;
+      }
+      TEST_EQUALITY(static_cast<int>(o.owned.size()), blockStart[rank + 1] - blockStart[rank]);
+      for (std::size_t i = 0; i < o.owned.size(); ++i) {
+        TEST_EQUALITY(lowest[o.owned[i]], rank);
+        TEST_EQUALITY(o.number[o.owned[i]], blockStart[rank] + static_cast<long long>(i));
+        if (i > 0)
+          TEST_COMPARE(o.owned[i - 1], <, o.owned[i]);
+      }
+    }
+  }
+}
+
 // MeshFactory::build with a communicator: rank 0 meshes, every rank gets the identical mesh;
 // an input error on rank 0 is thrown on every rank.
 TEUCHOS_UNIT_TEST(Partitioning, FactoryBroadcastsTheInitialMesh)

@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include <sc/core/ProblemData.hpp>
+
+#include "sc/contact/ContactSummary.hpp"
+
 namespace sc::contact {
 
 HertzReference hertzFromLoad(int dim, double P, double E, double nu, double R)
@@ -16,6 +20,21 @@ HertzReference hertzFromLoad(int dim, double P, double E, double nu, double R)
     h.maxPressure = 3.0 * P / (2.0 * M_PI * h.halfWidth * h.halfWidth);
   }
   return h;
+}
+
+std::optional<HertzComparison> compareWithHertz(int dim, const ContactSummary& summary,
+                                                const core::Material& material, double radius)
+{
+  const double load = summary.force[dim - 1];
+  if (!(load > 0.0))
+    return std::nullopt;
+  HertzComparison c;
+  c.reference = hertzFromLoad(dim, load, material.youngModulus,
+                              material.planeStress ? 0.0 : material.poissonRatio, radius);
+  c.zoneSizeRatio =
+      (dim == 2 ? summary.zoneSize : summary.equivalentZoneSize) / c.reference.halfWidth;
+  c.maxPressureRatio = summary.maxPressure / c.reference.maxPressure;
+  return c;
 }
 
 }  // namespace sc::contact

@@ -7,6 +7,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <numeric>
 
 namespace sc::mesh {
 
@@ -86,6 +87,31 @@ RankElements rankElements(const SimplexMesh& mesh, const std::vector<int>& owner
   }
   std::sort(out.ghosts.begin(), out.ghosts.end());
   return out;
+}
+
+VertexOwnership vertexOwnership(const SimplexMesh& mesh, const std::vector<int>& elementOwner,
+                                int rank, int nranks)
+{
+  const std::size_t nv = mesh.numVertices(), ne = mesh.numElements();
+  const int nodesPerElement = mesh.dim() + 1;
+  VertexOwnership v;
+  v.owner.assign(nv, nranks);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int* ev = mesh.elementVertices(static_cast<int>(e));
+    for (int i = 0; i < nodesPerElement; ++i)
+      v.owner[ev[i]] = std::min(v.owner[ev[i]], elementOwner[e]);
+  }
+  std::vector<std::size_t> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return v.owner[a] < v.owner[b]; });
+  v.number.resize(nv);
+  for (std::size_t i = 0; i < nv; ++i)
+    v.number[order[i]] = static_cast<long long>(i);
+  for (std::size_t i = 0; i < nv; ++i)
+    if (v.owner[i] == rank)
+      v.owned.push_back(static_cast<int>(i));
+  return v;
 }
 
 }  // namespace sc::mesh

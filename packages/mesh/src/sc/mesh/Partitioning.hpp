@@ -29,4 +29,18 @@ struct RankElements {
 /// Owned elements and the ghost layer (vertex neighbours, which include face neighbours).
 RankElements rankElements(const SimplexMesh& mesh, const std::vector<int>& owner, int rank);
 
+/// Vertices shared out for writing point data once (docs/output.md): each vertex is owned by the
+/// lowest rank among the owners of its elements, and numbered so that every rank's owned
+/// vertices form one contiguous block, ranks in order, vertex order kept within a block.
+struct VertexOwnership {
+  std::vector<int> owner;         ///< owning rank of every vertex
+  std::vector<long long> number;  ///< the vertex's number in the blocked order
+  std::vector<int> owned;         ///< the vertices `rank` owns, ascending (= their numbers' order)
+};
+
+/// The ownership of the vertices of `mesh` from the element owners `elementOwner` (ranks
+/// 0..nranks-1), with the owned vertices of `rank`.
+VertexOwnership vertexOwnership(const SimplexMesh& mesh, const std::vector<int>& elementOwner,
+                                int rank, int nranks);
+
 }  // namespace sc::mesh
