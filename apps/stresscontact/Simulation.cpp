@@ -37,7 +37,7 @@
 #include <sc/estimator/ErrorEstimator.hpp>
 #include <sc/io/CheckpointFile.hpp>
 #include <sc/solvers/LinearSolver.hpp>
-#include <sc/solvers/LinearSolverFactory.hpp>
+#include <sc/solvers/SolverPolicy.hpp>
 #include <sc/io/OutputDirectory.hpp>
 #include <sc/io/OutputLock.hpp>
 #include <sc/io/RunSummary.hpp>
@@ -100,50 +100,14 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   deckBodyForce_ = bodyForce_;
   deckContact_ = contact_;
   applyLoadStep(0);
-  {
-    // The Linear Solver keys these checks need (the list is validated when the solver is built,
-    // below; absent keys read as their defaults here).
-    const auto& ls = params_->sublist("Linear Solver");
-    const auto text = [](const Teuchos::ParameterList& l, const char* key, const char* fallback) {
-      return l.isParameter(key) ? l.get<std::string>(key) : std::string(fallback);
-    };
-    const Teuchos::ParameterList none;
-    const auto& il = ls.isSublist("Iterative") ? ls.sublist("Iterative") : none;
-    const std::string type = text(ls, "Type", "MUMPS");
-    const bool iterative = type == "Iterative";
-    // Stress block = Multigrid, or Type = Auto where it may choose it (3D without contact): keep
-    // the nested meshes (the levels are chosen per cycle).
-    autoSolver_ = type == "Auto";
-    if ((iterative && text(il, "Stress block", "MUMPS") == "Multigrid") ||
-        (autoSolver_ && dim == 3 && !boundaryConditions_.hasContact()))
-      hierarchy_ = std::make_unique<solvers::StressHierarchy>(discretization_.degree, comm_);
-    // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md §"Contact
-    // and friction"), and Symmetric = false declines to exploit symmetry.
-    const bool minres = iterative && text(il, "Method", "Auto") == "MINRES";
-    const bool symmetric = !ls.isParameter("Symmetric") || ls.get<bool>("Symmetric");
-    // The Krylov solver with contact rows is verified (against MUMPS, run_hertz2d_iterative) in
-    // 2D at degree 1 only; other contact scenes are rejected until a test covers them.
-    SC_THROW_IF(iterative && boundaryConditions_.hasContact() &&
-                    (dim != 2 || discretization_.degree != 1),
-                core::InputError,
-                "Linear Solver/Type = Iterative with contact is verified only in 2D at "
-                "'Discretization/Degree' = 1 (docs/solvers.md); this scene is "
-                    << dim << "D at degree " << discretization_.degree << ": use MUMPS or KLU2");
-    // The stress multigrid with contact rows (non-symmetric S_σ, LU patches) did not converge on
-    // the Hertz 2D scenes (Coulomb: GMRES residual 0.17 after 1000 iterations in cycle 11, the
-    // first with two levels; frictionless 6e-7; docs/solvers.md): rejected until it works and a
-    // test covers it.
-    SC_THROW_IF(iterative && boundaryConditions_.hasContact() && hierarchy_, core::InputError,
-                "Linear Solver/Iterative/Stress block = Multigrid is not available with contact "
-                "(its GMRES did not converge on the Hertz scene, docs/solvers.md); use a Stress "
-                "block of MUMPS or KLU2 (exact), or Linear Solver/Type = MUMPS");
-    SC_THROW_IF(minres && (boundaryConditions_.hasContact() || !symmetric), core::InputError,
-                "Linear Solver/Iterative/Method = MINRES needs a symmetric system, but "
-                    << (boundaryConditions_.hasContact()
-                            ? "this scene has a Contact boundary (contact rows are not symmetric)"
-                            : "Linear Solver/Symmetric = false")
-                    << "; use GMRES or Auto");
-  }
+  // What the Linear Solver list means for this scene, decided once: the nested meshes, the
+  // per-cycle Auto choice, the rejected combinations (solvers/SolverPolicy.hpp).
+  solverPolicy_ = std::make_unique<solvers::SolverPolicy>(
+      params_->sublist("Linear Solver"),
+      solvers::SolverPolicy::Scene{dim, discretization_.degree, boundaryConditions_.hasContact(),
+                                   comm_->getSize()});
+  if (solverPolicy_->needsHierarchy())
+    hierarchy_ = std::make_unique<solvers::StressHierarchy>(discretization_.degree, comm_);
   estimatorSettings_ = estimator::EstimatorSettings::fromParameters(params_->sublist("Estimator"));
   adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
@@ -181,9 +145,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                 "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution' needs "
                     << "'Problem/Exact solution' (valid: 'Manufactured smooth', 'Linear patch'), "
                     << "but it is 'None'.");
-  // Built here so that a bad Linear Solver list fails before any work.
   // Type = Auto: resolved per cycle from the system's size (setupElasticity); MUMPS until then.
-  solver_ = solvers::createLinearSolver(params_->sublist("Linear Solver"), autoProblem(0));
+  solver_ = solverPolicy_->create(0);
 
 }
 
@@ -382,14 +345,12 @@ void Simulation::setupElasticity()
   elementOwner_ = system_->elementOwner();
   space_ = system_->spacePtr();
   assembler_ = &system_->assembler();
-  if (autoSolver_) {
+  if (solverPolicy_->isAuto()) {
     // Type = Auto (docs/solvers.md): the solver for this cycle's size; a new one only if the
     // choice changes.
-    const auto resolved = solvers::resolveAutoType(params_->sublist("Linear Solver"),
-                                                   autoProblem(space_->numGlobalDofs()));
-    const std::string type = resolved.get<std::string>("Type");
+    const std::string type = solverPolicy_->typeFor(space_->numGlobalDofs());
     if (type != autoType_) {
-      solver_ = solvers::createLinearSolver(resolved);
+      solver_ = solverPolicy_->create(space_->numGlobalDofs());
       autoType_ = type;
       progress_.report("setup", "Linear Solver/Type = Auto: " + solver_->name() + " for " +
                                     std::to_string(space_->numGlobalDofs()) + " DOFs");
@@ -406,17 +367,11 @@ void Simulation::setupElasticity()
   progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
 }
 
-solvers::ProblemSize Simulation::autoProblem(long long dofs) const
-{
-  return {problem_.dimension, dofs, comm_->getSize(), boundaryConditions_.hasContact(),
-          hierarchy_ != nullptr};
-}
-
 std::vector<solvers::MultigridLevel> Simulation::multigridLevels()
 {
   // Type = Auto keeps the meshes in 3D but builds levels only for the cycles it solves with the
   // multigrid.
-  if (!hierarchy_ || (autoSolver_ && autoType_ != "Iterative"))
+  if (!hierarchy_ || !solverPolicy_->usesMultigrid(space_->numGlobalDofs()))
     return {};
   auto levels = hierarchy_->levels(*space_);
   std::ostringstream os;

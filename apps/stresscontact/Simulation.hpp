@@ -50,8 +50,8 @@ class MixedElasticitySystem;
 namespace sc::solvers {
 class LinearSolver;
 struct MultigridLevel;
+class SolverPolicy;
 class StressHierarchy;
-struct ProblemSize;
 }
 namespace sc::core {
 class ExactSolution;
@@ -129,8 +129,6 @@ private:
   void solveElasticity();
   /// The stress-block multigrid levels for this cycle's space (empty without hierarchy_).
   std::vector<solvers::MultigridLevel> multigridLevels();
-  /// What Linear Solver/Type = Auto decides on, for a system of `dofs` unknowns.
-  solvers::ProblemSize autoProblem(long long dofs) const;
   void solveContact();
   /// The solved cycle's DOFs, linear solver and contact state (with the Hertz comparison) into
   /// *results_.
@@ -207,8 +205,9 @@ private:
   /// contact: the meshes of the run (initial mesh and every refinement, or the restored mesh
   /// after a restart), from which the multigrid levels are chosen each cycle; null otherwise.
   std::unique_ptr<solvers::StressHierarchy> hierarchy_;
+  /// What the Linear Solver list means for this scene (hierarchy, Auto choice), decided once.
+  std::unique_ptr<solvers::SolverPolicy> solverPolicy_;
   /// Linear Solver/Type = Auto: solver_ is chosen per cycle; autoType_ = its resolved Type.
-  bool autoSolver_ = false;
   std::string autoType_;
   std::vector<int> linearIterations_;  // Krylov iterations per solve of the current cycle
   Teuchos::RCP<Tpetra::MultiVector<>> solution_;

@@ -8,6 +8,7 @@
 
 #include <sc/core/Error.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
+#include <sc/solvers/SolverPolicy.hpp>
 
 namespace {
 
@@ -93,6 +94,57 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, AutoPolicy)
   // another Type passes through unchanged
   pl.set("Type", std::string("KLU2"));
   TEST_EQUALITY(typeFor({3, big, 1, false, true}), "KLU2");
+}
+
+// SolverPolicy (docs/solvers.md): what a validated Linear Solver list means for a scene, decided
+// once. The Auto rule as above; the nested meshes kept exactly when the multigrid may be used;
+// the combinations without a covering test rejected.
+TEUCHOS_UNIT_TEST(LinearSolverFactory, SolverPolicyDecidesOnce)
+{
+  using sc::solvers::LinearSolverFactory;
+  using sc::solvers::SolverPolicy;
+  const long long big = sc::solvers::kAutoIterativeDofs3D;
+  auto list = [](const std::string& type, const std::string& stressBlock = "MUMPS",
+                 const std::string& method = "Auto", bool symmetric = true) {
+    Teuchos::ParameterList pl;
+    pl.set("Type", type);
+    pl.set("Symmetric", symmetric);
+    pl.sublist("Iterative").set("Stress block", stressBlock);
+    pl.sublist("Iterative").set("Method", method);
+    return LinearSolverFactory::validate(pl);
+  };
+  const SolverPolicy::Scene plain3D{3, 1, false, 2}, contact3D{3, 1, true, 2},
+      plain2D{2, 1, false, 1}, contact2D{2, 1, true, 1}, contact2DDegree2{2, 2, true, 1};
+
+  const SolverPolicy autoPlain3D(list("Auto"), plain3D);
+  TEST_ASSERT(autoPlain3D.isAuto() && autoPlain3D.needsHierarchy());
+  TEST_EQUALITY(autoPlain3D.typeFor(big - 1), "MUMPS");
+  TEST_ASSERT(!autoPlain3D.usesMultigrid(big - 1));
+  TEST_EQUALITY(autoPlain3D.typeFor(big), "Iterative");
+  TEST_ASSERT(autoPlain3D.usesMultigrid(big));
+  TEST_EQUALITY(autoPlain3D.create(0)->name(), "MUMPS");
+  const SolverPolicy autoContact3D(list("Auto"), contact3D);
+  TEST_ASSERT(!autoContact3D.needsHierarchy());
+  TEST_EQUALITY(autoContact3D.typeFor(big), "MUMPS");
+  TEST_ASSERT(!SolverPolicy(list("Auto"), plain2D).needsHierarchy());
+
+  const SolverPolicy multigrid(list("Iterative", "Multigrid"), plain2D);
+  TEST_ASSERT(!multigrid.isAuto() && multigrid.needsHierarchy() && multigrid.usesMultigrid(10));
+  const SolverPolicy exactBlock(list("Iterative"), contact2D);  // verified: run_hertz2d_iterative
+  TEST_ASSERT(!exactBlock.needsHierarchy());
+  TEST_EQUALITY(exactBlock.typeFor(10), "Iterative");
+  TEST_ASSERT(exactBlock.create(10)->isIterative());
+  const SolverPolicy mumps(list("MUMPS"), plain3D);
+  TEST_ASSERT(!mumps.needsHierarchy() && !mumps.usesMultigrid(10 * big));
+  TEST_EQUALITY(mumps.typeFor(10 * big), "MUMPS");
+  TEST_NOTHROW(SolverPolicy(list("Iterative", "MUMPS", "MINRES"), plain3D));
+
+  TEST_THROW(SolverPolicy(list("Iterative"), contact3D), sc::core::InputError);
+  TEST_THROW(SolverPolicy(list("Iterative"), contact2DDegree2), sc::core::InputError);
+  TEST_THROW(SolverPolicy(list("Iterative", "Multigrid"), contact2D), sc::core::InputError);
+  TEST_THROW(SolverPolicy(list("Iterative", "MUMPS", "MINRES"), contact2D), sc::core::InputError);
+  TEST_THROW(SolverPolicy(list("Iterative", "MUMPS", "MINRES", false), plain3D),
+             sc::core::InputError);
 }
 
 }  // namespace
