@@ -22,9 +22,9 @@
 #include <sc/solvers/StressHierarchy.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/contact/ContactSummary.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/io/CheckpointFile.hpp>
-#include <sc/io/Collective.hpp>
 #include <sc/io/HistoryTable.hpp>
 #include <sc/io/ParameterListJson.hpp>
 #include <sc/io/RunSummary.hpp>
@@ -122,9 +122,9 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
     std::sort(v.begin(), v.end());
     for (int x : v) mine.push_back(static_cast<double>(x));
   }
-  std::vector<double> points = contact::gatherAllVariable(mine, *comm_);
+  std::vector<double> points = core::gatherAllConcatenated(*comm_, mine);
 
-  io::runOnRoot(*comm_, [&] {
+  core::runOnRoot(*comm_, [&] {
     io::CheckpointFile cp;
     cp.setInts("checkpoint_version", {kCheckpointVersion});
     cp.setString("code_version", versionString());

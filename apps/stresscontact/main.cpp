@@ -9,10 +9,8 @@
 //
 // Exit status: 0 success, 1 bad input (deck, mesh file, command line), 2 a solver did not
 // converge (summary.json says converged: false), 3 any other error.
-#include <chrono>
 #include <cstdlib>
 #include <iostream>
-#include <thread>
 #include <string>
 #include <vector>
 
@@ -21,6 +19,7 @@
 #include <Teuchos_GlobalMPISession.hpp>
 #include <mpi.h>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/FloatingPointTraps.hpp>
 #include <sc/io/MpiIoEnvironment.hpp>
@@ -126,39 +125,6 @@ void printFramed(std::ostream& os, const std::string& title, const std::string& 
 // error is its own and aborts the job (docs/reliability.md).
 constexpr double kErrorAgreementSeconds = 30.0;
 
-// A communicator used only to agree on errors, so that the agreement never mixes with a
-// collective operation of the run on the application's communicator.
-class ErrorAgreement {
-public:
-  ErrorAgreement() { MPI_Comm_dup(MPI_COMM_WORLD, &comm_); }
-  ~ErrorAgreement() { MPI_Comm_free(&comm_); }
-  ErrorAgreement(const ErrorAgreement&) = delete;
-  ErrorAgreement& operator=(const ErrorAgreement&) = delete;
-
-  /// Called by every rank that failed with exit code `code`. If every rank fails (the usual
-  /// case: input is the same on all ranks and the library's checks are collective), returns the
-  /// largest code of all ranks; if some rank does not report an error within the time limit,
-  /// returns 0 (the error is local to this rank).
-  int agree(int code)
-  {
-    int worst = 0;
-    MPI_Request request;
-    MPI_Iallreduce(&code, &worst, 1, MPI_INT, MPI_MAX, comm_, &request);
-    const double start = MPI_Wtime();
-    for (int done = 0;;) {
-      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-      if (done)
-        return worst;
-      if (MPI_Wtime() - start > kErrorAgreementSeconds)
-        return 0;
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  }
-
-private:
-  MPI_Comm comm_ = MPI_COMM_NULL;
-};
-
 }  // namespace
 
 // The rank of this process as the MPI launcher announces it (Open MPI, MPICH/Hydra, Slurm), 0
@@ -197,7 +163,7 @@ int main(int argc, char* argv[])
   const int rank = comm->getRank();
   Kokkos::ScopeGuard kokkos(argc, argv);
   sc::core::enableFloatingPointTrapsFromEnvironment();  // SC_TRAP_FPE=1: set by CTest
-  ErrorAgreement errors;
+  sc::core::ErrorAgreement errors(*comm);
   int code = 0;
   std::string title, message;
   try {
@@ -237,7 +203,7 @@ int main(int argc, char* argv[])
   // are collective, so normally all ranks fail together: then rank 0 alone prints the error and
   // all ranks leave normally (MPI_Finalize) with the documented exit status. An error of one
   // rank only (the others did not report one in time) aborts the job rather than hang it.
-  const int agreed = errors.agree(code);
+  const int agreed = errors.agree(code, kErrorAgreementSeconds);
   if (agreed != 0) {
     if (rank == 0)
       printFramed(std::cerr, title, message, 0);

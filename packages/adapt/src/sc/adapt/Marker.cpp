@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include <Teuchos_CommHelpers.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/core/Error.hpp>
@@ -31,8 +31,7 @@ std::vector<int> Marker::mark(int numElements, const std::vector<int>& ownedElem
                 "indicator of element " << ownedElements[i] << " is " << indicators[i]);
     local[ownedElements[i]] = indicators[i];
   }
-  if (numElements > 0)
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, numElements, local.data(), all.data());
+  core::sumOverRanks(comm, numElements, local.data(), all.data());
   auto marked = select(all);
   std::sort(marked.begin(), marked.end());
   return marked;

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <Teuchos_Array.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <Thyra_DefaultBlockedLinearOp.hpp>
 #include <Thyra_DefaultProductMultiVector.hpp>
 #include <Thyra_DefaultProductVectorSpace.hpp>
@@ -17,6 +16,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 
@@ -108,7 +108,7 @@ void BlockSystem::build(const CrsMatrix& M)
   // that none is left waiting in a collective call).
   typename CrsMatrix::local_inds_host_view_type cols;
   typename CrsMatrix::values_host_view_type vals;
-  long long dropped = 0, droppedAll = 0;
+  long long dropped = 0;
   for (int bi = 1; bi < numFields; ++bi)
     for (LO r : I.monolithicLocal[bi]) {
       M.getLocalRowView(r, cols, vals);
@@ -116,7 +116,7 @@ void BlockSystem::build(const CrsMatrix& M)
         if (!structurallyNonzero(bi, colField[cols(k)]) && vals(k) != 0.0)
           ++dropped;
     }
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, dropped, Teuchos::outArg(droppedAll));
+  const long long droppedAll = core::sumOverRanks(*comm, dropped);
   SC_THROW_IF(droppedAll > 0, core::InternalError,
               "BlockSystem: the matrix has " << droppedAll << " non-zero entries in the uu, uθ, θu "
                   "or θθ blocks, which the mixed elasticity system has as zero blocks (docs/theory.md §\"Mixed formulation\")");

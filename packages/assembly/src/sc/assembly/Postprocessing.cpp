@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
+#include <sc/core/Collective.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -110,7 +110,7 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
       }
     }
   }
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 9, local, global);
+  core::sumOverRanks(comm, 9, local, global);
   ErrorNorms n;
   n.stress = std::sqrt(global[0]);
   n.stressDiv = std::sqrt(global[1]);

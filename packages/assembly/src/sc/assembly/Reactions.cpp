@@ -1,6 +1,6 @@
 #include "sc/assembly/Reactions.hpp"
 
-#include <Teuchos_CommHelpers.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <sc/disc/ElementValues.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -58,9 +58,7 @@ std::vector<BoundaryForce> computeBoundaryForces(const MixedElasticityAssembler&
       }
     }
   }
-  if (!local.empty())
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()),
-                                    local.data(), global.data());
+  core::sumOverRanks(comm, static_cast<int>(local.size()), local.data(), global.data());
   std::vector<BoundaryForce> out(parts);
   for (int p = 0; p < parts; ++p) {
     out[p].part = m.boundaryName(p);
@@ -93,7 +91,7 @@ std::array<double, 3> computeBodyForceResultant(const MixedElasticityAssembler& 
       }
     }
   }
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 3, local.data(), global.data());
+  core::sumOverRanks(comm, 3, local.data(), global.data());
   return global;
 }
 

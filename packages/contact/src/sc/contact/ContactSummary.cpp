@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
+#include "sc/core/Collective.hpp"
 
 namespace sc::contact {
 namespace {
@@ -45,19 +45,7 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
 
 std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm)
 {
-  int n = static_cast<int>(mine.size()), total = 0;
-  Teuchos::reduceAll<int, int>(comm, Teuchos::REDUCE_SUM, 1, &n, &total);
-  std::vector<int> sizes(comm.getSize());
-  Teuchos::gatherAll<int, int>(comm, 1, &n, comm.getSize(), sizes.data());
-  // Through a zero-padded sum: simple, and the point counts are small.
-  std::vector<double> padded(total, 0.0), all(total, 0.0);
-  int offset = 0;
-  for (int r = 0; r < comm.getRank(); ++r)
-    offset += sizes[r];
-  std::copy(mine.begin(), mine.end(), padded.begin() + offset);
-  if (total > 0)
-    Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, total, padded.data(), all.data());
-  return all;
+  return core::gatherAllConcatenated(comm, mine);
 }
 
 ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
@@ -98,13 +86,12 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     }
   }
   double global[9];
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 9, local, global);
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MAX, 1, &localMax, &out.maxPressure);
-  double globalMin = 1e300;
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_MIN, 1, &localMin, &globalMin);
+  core::sumOverRanks(comm, 9, local, global);
+  out.maxPressure = core::maxOverRanks(comm, localMax);
+  const double globalMin = core::minOverRanks(comm, localMin);
   out.minPressure = globalMin < 1e299 ? globalMin : 0.0;
   long long gcounts[3];
-  Teuchos::reduceAll<int, long long>(comm, Teuchos::REDUCE_SUM, 3, counts, gcounts);
+  core::sumOverRanks(comm, 3, counts, gcounts);
   for (int i = 0; i < dim; ++i) {
     out.force[i] = global[i];
     out.center[i] = global[3] > 0 ? global[4 + i] / global[3] : 0.0;
@@ -139,7 +126,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     mine.push_back(s);
     mine.push_back(static_cast<double>(static_cast<int>(status(p))));
   }
-  const std::vector<double> all = gatherAllVariable(mine, comm);
+  const std::vector<double> all = core::gatherAllConcatenated(comm, mine);
   const int total = static_cast<int>(all.size());
   std::vector<double> s;
   std::vector<char> active, stick;

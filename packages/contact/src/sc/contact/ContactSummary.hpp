@@ -38,7 +38,8 @@ struct ContactSummary {
   long long numFree = 0, numStick = 0, numSlip = 0;
 };
 
-/// Every rank's `mine` concatenated in rank order, on every rank (a variable-size all-gather).
+/// Every rank's `mine` concatenated in rank order, on every rank: core::gatherAllConcatenated,
+/// under the name ActiveSetSolver still calls.
 std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm);
 
 /// `pressureFloor`: points with −σ_N ≤ pressureFloor count as free (the application passes

@@ -1,8 +1,9 @@
 #include "sc/core/Timers.hpp"
 
+#include "sc/core/Collective.hpp"
+
 #include <sys/resource.h>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
 namespace sc::core {
@@ -38,9 +39,7 @@ std::map<std::string, double> PhaseTimers::cycleTimings() const
   for (const auto& [name, seconds] : current_)
     local.push_back(seconds);
   std::vector<double> global(local.size(), 0.0);
-  if (!local.empty())
-    Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, static_cast<int>(local.size()),
-                                    local.data(), global.data());
+  maxOverRanks(*comm_, static_cast<int>(local.size()), local.data(), global.data());
   std::map<std::string, double> result;
   std::size_t i = 0;
   for (const auto& kv : current_)
@@ -56,8 +55,8 @@ PhaseTimers::PeakMemory PhaseTimers::peakMemory() const
   getrusage(RUSAGE_SELF, &usage);
   const double local = static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kB
   PeakMemory result;
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, local, Teuchos::outArg(result.maxMB));
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, local, Teuchos::outArg(result.sumMB));
+  result.maxMB = maxOverRanks(*comm_, local);
+  result.sumMB = sumOverRanks(*comm_, local);
   return result;
 }
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include <Teuchos_CommHelpers.hpp>
+#include "sc/core/Collective.hpp"
 
 #include <sc/assembly/ElementSolution.hpp>
 #include <sc/contact/Obstacle.hpp>
@@ -119,7 +119,7 @@ void ContactContribution::addTo(ErrorEstimate& est, assembly::ElementSolution& s
       local[4] += signedNormal;
     }
   }
-  Teuchos::reduceAll<int, double>(comm, Teuchos::REDUCE_SUM, 5, local, global);
+  core::sumOverRanks(comm, 5, local, global);
   est.addPart("contact_complementarity", global[0]);
   est.addPart("contact_penetration", global[1]);
   est.addPart("contact_tension", global[2]);

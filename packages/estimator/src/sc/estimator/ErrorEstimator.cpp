@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
+#include "sc/core/Collective.hpp"
 
 #include <sc/assembly/ElementSolution.hpp>
 #include <sc/core/Error.hpp>
@@ -163,7 +163,7 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
     local[2] += osc;
     local[3] += norm;
   }
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 4, local, global);
+  core::sumOverRanks(*comm_, 4, local, global);
   est.addPart("volume", global[0]);
   est.addPart("asymmetry", global[1]);
   est.addPart("oscillation", global[2]);

@@ -1,11 +1,10 @@
 #include <sc/io/CsvWriter.hpp>
 
 #include <sc/io/AtomicFile.hpp>
-#include <sc/io/Collective.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <sc/core/Error.hpp>
 
-#include <Teuchos_CommHelpers.hpp>
 
 #include <cstdio>
 #include <numeric>
@@ -75,7 +74,7 @@ void CsvWriter::writeLocal(const std::string& path) const { writeFileAtomically(
 void CsvWriter::writeGathered(const Teuchos::Comm<int>& comm, const std::string& path) const
 {
   const std::string all = gatherTextToRoot(comm, formatRows());
-  runOnRoot(comm, [&] {
+  core::runOnRoot(comm, [&] {
     CsvWriter headerOnly(header_);
     writeFileAtomically(path, headerOnly.format() + all);
   });
@@ -84,7 +83,7 @@ void CsvWriter::writeGathered(const Teuchos::Comm<int>& comm, const std::string&
 std::string gatherTextToRoot(const Teuchos::Comm<int>& comm, const std::string& text)
 {
   // Raw MPI: Teuchos::gatherv has no char specialisation in Trilinos 13.2.
-  const MPI_Comm mpiComm = rawMpiComm(comm);
+  const MPI_Comm mpiComm = core::rawMpiComm(comm);
   int size = 1, rank = 0;
   MPI_Comm_size(mpiComm, &size);
   MPI_Comm_rank(mpiComm, &rank);

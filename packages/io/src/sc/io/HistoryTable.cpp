@@ -1,7 +1,7 @@
 #include <sc/io/HistoryTable.hpp>
 
 #include <sc/io/AtomicFile.hpp>
-#include <sc/io/Collective.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/io/CsvWriter.hpp>
 
 #include <algorithm>
@@ -178,7 +178,7 @@ std::string formatHistory(const nlohmann::ordered_json& cycles, int dim, bool co
 void writeHistory(const Teuchos::Comm<int>& comm, const std::string& directory,
                   const nlohmann::ordered_json& cycles, int dim, bool contact)
 {
-  runOnRoot(comm, [&] {
+  core::runOnRoot(comm, [&] {
     writeFileAtomically((std::filesystem::path(directory) / "history.csv").string(),
                         formatHistory(cycles, dim, contact));
   });

@@ -1,6 +1,6 @@
 #include <sc/io/OutputDirectory.hpp>
 
-#include <sc/io/Collective.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <sc/core/Error.hpp>
 
@@ -14,7 +14,6 @@
 #include <system_error>
 
 #include <nlohmann/json.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <sys/resource.h>
 #include <sys/statvfs.h>
 #include <climits>
@@ -121,10 +120,10 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
                                                const Teuchos::Comm<int>& comm)
 {
   std::vector<std::string> removed;
-  runOnRoot(comm, [&] { removed = removeEarlierRunFiles(directory, baseName); });
+  core::runOnRoot(comm, [&] { removed = removeEarlierRunFiles(directory, baseName); });
   // Every rank learns how many (the names matter only to rank 0's progress line).
   int count = static_cast<int>(removed.size());
-  Teuchos::broadcast(comm, 0, &count);
+  core::broadcast(comm, 0, count);
   if (comm.getRank() != 0)
     removed.assign(static_cast<std::size_t>(count), std::string());
   return removed;
@@ -177,9 +176,9 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
                                                const Teuchos::Comm<int>& comm)
 {
   std::vector<std::string> removed;
-  runOnRoot(comm, [&] { removed = removeFilesAfterCycle(directory, baseName, lastCycle); });
+  core::runOnRoot(comm, [&] { removed = removeFilesAfterCycle(directory, baseName, lastCycle); });
   int count = static_cast<int>(removed.size());
-  Teuchos::broadcast(comm, 0, &count);
+  core::broadcast(comm, 0, count);
   if (comm.getRank() != 0)
     removed.assign(static_cast<std::size_t>(count), std::string());
   return removed;
@@ -250,7 +249,7 @@ void checkRunFileNamesAreFree(const std::string& directory, const std::string& b
 void checkRunFileNamesAreFree(const std::string& directory, const std::string& baseName,
                               const Teuchos::Comm<int>& comm)
 {
-  runOnRoot(comm, [&] {
+  core::runOnRoot(comm, [&] {
     checkRunFileNameLengths(directory, baseName);
     checkRunFileNamesAreFree(directory, baseName);
   });
@@ -325,12 +324,12 @@ void checkOutputDirectory(const std::string& directory)
 
 void checkOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm)
 {
-  runOnRoot(comm, [&] { checkOutputDirectory(directory); });
+  core::runOnRoot(comm, [&] { checkOutputDirectory(directory); });
 }
 
 void createOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm)
 {
-  runOnRoot(comm, [&] { createOutputDirectory(directory); });
+  core::runOnRoot(comm, [&] { createOutputDirectory(directory); });
 }
 
 }  // namespace sc::io

@@ -1,6 +1,6 @@
 #include <sc/io/OutputLock.hpp>
 
-#include <sc/io/Collective.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <sc/core/Error.hpp>
 
@@ -251,7 +251,7 @@ OutputLock::OutputLock(const Teuchos::Comm<int>& comm, std::string directory)
     : directory_(std::move(directory)),
       path_((std::filesystem::path(directory_) / kOutputLockName).string())
 {
-  runOnRoot(comm, [&] {
+  core::runOnRoot(comm, [&] {
     takenOver_ = acquire(directory_, path_);
     held_ = true;
   });
@@ -288,7 +288,7 @@ void checkOutputLock(const std::string& directory)
 
 void checkOutputLock(const std::string& directory, const Teuchos::Comm<int>& comm)
 {
-  runOnRoot(comm, [&] { checkOutputLock(directory); });
+  core::runOnRoot(comm, [&] { checkOutputLock(directory); });
 }
 
 }  // namespace sc::io

@@ -1,7 +1,7 @@
 #include <sc/io/RunSummary.hpp>
 
 #include <sc/io/AtomicFile.hpp>
-#include <sc/io/Collective.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/io/ParameterListJson.hpp>
 
 #include <sc/core/Error.hpp>
@@ -81,7 +81,7 @@ void RunSummary::writeLocal() const
 
 void RunSummary::write() const
 {
-  runOnRoot(*comm_, [this] { writeLocal(); });
+  core::runOnRoot(*comm_, [this] { writeLocal(); });
 }
 
 }  // namespace sc::io

@@ -1,12 +1,11 @@
 #include <sc/io/XdmfWriter.hpp>
 
 #include <sc/io/AtomicFile.hpp>
-#include <sc/io/Collective.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/io/OutputDirectory.hpp>
 
 #include <sc/core/Error.hpp>
 
-#include <Teuchos_CommHelpers.hpp>
 
 #include <hdf5.h>
 
@@ -200,17 +199,6 @@ std::string signature(const std::vector<GridPiece>& grids)
   return s.str();
 }
 
-std::string broadcastFromRoot(const Teuchos::Comm<int>& comm, const std::string& s)
-{
-  int length = static_cast<int>(s.size());
-  Teuchos::broadcast<int, int>(comm, 0, &length);
-  std::vector<char> buf(s.begin(), s.end());
-  buf.resize(static_cast<std::size_t>(length));
-  if (length > 0)
-    Teuchos::broadcast<int, char>(comm, 0, length, buf.data());
-  return std::string(buf.begin(), buf.end());
-}
-
 bool validName(const std::string& name)
 {
   return !name.empty() && name.find_first_of("/.<>&\"' ") == std::string::npos;
@@ -391,10 +379,11 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
 
   // 1. Validate before any collective HDF5 call, so a bad piece on one rank cannot hang others.
   SC_THROW_IF(cycle < 0, sc::core::InputError, "XdmfWriter::writeStep: cycle = " << cycle << " < 0");
-  throwIfAnyRankFailed(comm, checkLocal(grids));
+  core::throwIfAnyRankFailed(comm, checkLocal(grids));
   const std::string mySignature = signature(grids);
-  const std::string rootSignature = broadcastFromRoot(comm, mySignature);
-  throwIfAnyRankFailed(comm, mySignature == rootSignature
+  std::string rootSignature = mySignature;
+  core::broadcast(comm, 0, rootSignature);
+  core::throwIfAnyRankFailed(comm, mySignature == rootSignature
                                  ? std::string()
                                  : "grids/fields/information differ from rank 0's:\n" +
                                        mySignature + "rank 0 has:\n" + rootSignature);
@@ -406,14 +395,13 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
     local[2 * g] = static_cast<long long>(grids[g].localVertexCount());
     local[2 * g + 1] = static_cast<long long>(grids[g].localCellCount());
   }
-  const MPI_Comm mpiComm = rawMpiComm(comm);
+  const MPI_Comm mpiComm = core::rawMpiComm(comm);
   if (ng > 0) {
     MPI_Exscan(local.data(), offset.data(), static_cast<int>(2 * ng), MPI_LONG_LONG, MPI_SUM,
                mpiComm);
     if (rank == 0)
       std::fill(offset.begin(), offset.end(), 0LL);  // MPI_Exscan leaves rank 0's undefined
-    MPI_Allreduce(local.data(), total.data(), static_cast<int>(2 * ng), MPI_LONG_LONG, MPI_SUM,
-                  mpiComm);
+    total = core::sumOverRanks(comm, local);
   }
   // Index of the grid providing each grid's vertices.
   std::vector<std::size_t> geometryOf(ng);
@@ -437,7 +425,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
           break;
         }
     }
-    throwIfAnyRankFailed(comm, err);
+    core::throwIfAnyRankFailed(comm, err);
   }
 
   // 3. Collective HDF5 write under a temporary name (rank 0's pid, shared by all ranks).
@@ -461,10 +449,10 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
       bytes += nc * 4 * (grids[g].integerCellFields.size() + 1);  // + partition
     }
     bytes += bytes / 20 + (64ull << 10);
-    runOnRoot(comm, [&] { checkRoomForFile(directory_, finalPath, bytes); });
+    core::runOnRoot(comm, [&] { checkRoomForFile(directory_, finalPath, bytes); });
   }
   long pid = static_cast<long>(::getpid());
-  Teuchos::broadcast<int, long>(comm, 0, &pid);
+  core::broadcast(comm, 0, pid);
   const std::string tmpPath = temporaryPathFor(finalPath, pid);
   const std::string h5Name = h5FileName(cycle);
   std::ostringstream stepXml;
@@ -605,7 +593,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
   // 4. Publish: every rank has closed the file, so rank 0 renames it into place, then rewrites
   // the .xdmf, which thus never references a missing or partial .h5.
   comm.barrier();
-  runOnRoot(comm, [&] {
+  core::runOnRoot(comm, [&] {
     renameFile(tmpPath, finalPath);
     const Step step{cycle, time, stepXml.str()};
     auto it = std::find_if(steps_.begin(), steps_.end(), [&](const Step& s) { return s.cycle == cycle; });
@@ -619,7 +607,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
 
 void XdmfWriter::restoreSteps(const std::vector<Step>& steps)
 {
-  runOnRoot(*comm_, [&] {
+  core::runOnRoot(*comm_, [&] {
     steps_ = steps;
     rewriteXdmf();
   });

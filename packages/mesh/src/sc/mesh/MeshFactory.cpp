@@ -10,7 +10,7 @@
 #include <sc/mesh/HalfDiscGeometry.hpp>
 #include <sc/mesh/ResourceEstimate.hpp>
 
-#include <Teuchos_CommHelpers.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -334,22 +334,6 @@ GmshMeshIO::MeshFile initialMesh(const Teuchos::ParameterList& p, int dimension,
   return {GmshMeshIO::meshGeometry(*geometry, h), Teuchos::null};
 }
 
-template <class T>
-void broadcastVector(const Teuchos::Comm<int>& comm, std::vector<T>& v)
-{
-  int n = static_cast<int>(v.size());
-  Teuchos::broadcast<int, int>(comm, 0, &n);
-  v.resize(n);
-  if (n > 0) Teuchos::broadcast<int, T>(comm, 0, n, v.data());
-}
-
-void broadcastString(const Teuchos::Comm<int>& comm, std::string& s)
-{
-  std::vector<char> c(s.begin(), s.end());
-  broadcastVector(comm, c);
-  s.assign(c.begin(), c.end());
-}
-
 Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
                                       Teuchos::RCP<const SimplexMesh> initial,
                                       Teuchos::RCP<const Geometry> geometry, bool split,
@@ -380,40 +364,32 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   checkInitialEstimate(p, dimension, limit);  // the same limit on every rank: throws everywhere
   std::vector<double> coords, boundaryNodes;
   std::vector<int> elems, bfv, bpart, boundaryPart;
-  std::string names, origin, error;
-  if (comm.getRank() == 0) {
-    try {
-      const auto file = initialMesh(p, dimension, geometry);
-      const auto& m = file.mesh;
-      if (!file.boundary.is_null()) {
-        boundaryNodes = file.boundary->faceNodes();
-        boundaryPart = file.boundary->facePart();
-      }
-      coords = m->coordinates();
-      elems = m->elementVertices();
-      for (int f : m->boundaryFaces()) {
-        bfv.insert(bfv.end(), m->faceVertices(f), m->faceVertices(f) + dimension);
-        bpart.push_back(m->faceBoundaryId(f));
-      }
-      for (const auto& n : m->boundaryNames()) names += n + '\n';
-      origin = m->origin();
-    } catch (const sc::core::InputError& e) {
-      error = std::string("I") + e.what();
-    } catch (const std::exception& e) {
-      error = std::string("X") + e.what();
+  std::string names, origin;
+  // Rank 0 meshes (Gmsh); an error there is thrown on every rank (InputError stays one).
+  core::runOnRoot(comm, [&] {
+    const auto file = initialMesh(p, dimension, geometry);
+    const auto& m = file.mesh;
+    if (!file.boundary.is_null()) {
+      boundaryNodes = file.boundary->faceNodes();
+      boundaryPart = file.boundary->facePart();
     }
-  }
-  broadcastString(comm, error);
-  SC_THROW_IF(!error.empty() && error[0] == 'I', sc::core::InputError, error.substr(1));
-  SC_THROW_IF(!error.empty(), sc::core::InternalError, error.substr(1));
-  broadcastVector(comm, coords);
-  broadcastVector(comm, elems);
-  broadcastVector(comm, bfv);
-  broadcastVector(comm, bpart);
-  broadcastString(comm, names);
-  broadcastString(comm, origin);
-  broadcastVector(comm, boundaryNodes);
-  broadcastVector(comm, boundaryPart);
+    coords = m->coordinates();
+    elems = m->elementVertices();
+    for (int f : m->boundaryFaces()) {
+      bfv.insert(bfv.end(), m->faceVertices(f), m->faceVertices(f) + dimension);
+      bpart.push_back(m->faceBoundaryId(f));
+    }
+    for (const auto& n : m->boundaryNames()) names += n + '\n';
+    origin = m->origin();
+  });
+  core::broadcast(comm, 0, coords);
+  core::broadcast(comm, 0, elems);
+  core::broadcast(comm, 0, bfv);
+  core::broadcast(comm, 0, bpart);
+  core::broadcast(comm, 0, names);
+  core::broadcast(comm, 0, origin);
+  core::broadcast(comm, 0, boundaryNodes);
+  core::broadcast(comm, 0, boundaryPart);
   std::vector<std::string> nameList;
   for (std::size_t a = 0, b; (b = names.find('\n', a)) != std::string::npos; a = b + 1)
     nameList.push_back(names.substr(a, b - a));

@@ -2,7 +2,7 @@
 
 #include <sc/core/Error.hpp>
 
-#include <Teuchos_CommHelpers.hpp>
+#include <sc/core/Collective.hpp>
 
 #include <metis.h>
 
@@ -55,10 +55,7 @@ std::vector<int> partitionElements(const SimplexMesh& mesh, const Teuchos::Comm<
 {
   std::vector<int> owner;
   if (comm.getRank() == 0) owner = partitionElements(mesh, comm.getSize());
-  int n = static_cast<int>(owner.size());
-  Teuchos::broadcast<int, int>(comm, 0, &n);
-  owner.resize(n);
-  if (n > 0) Teuchos::broadcast<int, int>(comm, 0, n, owner.data());
+  core::broadcast(comm, 0, owner);
   return owner;
 }
 

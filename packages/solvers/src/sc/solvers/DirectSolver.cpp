@@ -3,7 +3,7 @@
 
 #include <sc/solvers/DirectSolver.hpp>
 
-#include <Teuchos_CommHelpers.hpp>
+#include "sc/core/Collective.hpp"
 #include <Teuchos_Time.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -63,8 +63,8 @@ void DirectSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bool 
                    A_->getGlobalNumEntries() == A->getGlobalNumEntries() &&
                    A_->getRowMap()->isSameAs(*A->getRowMap());
   // every rank must agree (isSameAs is collective; the hash is local)
-  int localSame = (sameGraph && hash == graphHash_) ? 1 : 0, globalSame = 0;
-  Teuchos::reduceAll(*A->getComm(), Teuchos::REDUCE_MIN, localSame, Teuchos::outArg(globalSame));
+  const int localSame = (sameGraph && hash == graphHash_) ? 1 : 0;
+  const int globalSame = sc::core::minOverRanks(*A->getComm(), localSame);
   A_ = A;
   graphHash_ = hash;
   symbolicValid_ = globalSame == 1;

@@ -16,12 +16,12 @@
 #include <vector>
 
 #include <Amesos2.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 
 namespace sc::solvers {
@@ -42,35 +42,26 @@ struct Klu2Solver::Impl {
 
 namespace {
 
-// Run f on rank 0 only; if it throws, every rank throws sc::core::Error with its message.
+// Run f on rank 0 only; if it throws, every rank throws sc::core::Error naming the phase.
 template <class F>
 void onRoot(const Teuchos::Comm<int>& comm, const std::string& phase, F f)
 {
-  int failed = 0;
-  std::string message;
-  if (comm.getRank() == 0) {
+  sc::core::runOnRoot(comm, [&] {
     try {
       f();
     } catch (const std::exception& e) {
-      failed = 1;
       // Amesos2's messages start with file:line and "Throw number"; keep their last line.
-      message = e.what();
+      std::string message = e.what();
       while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
         message.pop_back();
       const auto nl = message.find_last_of('\n');
       if (nl != std::string::npos) message = message.substr(nl + 1);
+      throw sc::core::Error("KLU2 " + phase + " failed: " + message +
+                            (phase == "numerical factorisation"
+                                 ? " (the matrix is singular to working precision)"
+                                 : ""));
     }
-  }
-  Teuchos::broadcast(comm, 0, &failed);
-  if (!failed) return;
-  int length = static_cast<int>(message.size());
-  Teuchos::broadcast(comm, 0, &length);
-  message.resize(static_cast<size_t>(length));
-  if (length > 0) Teuchos::broadcast(comm, 0, length, &message[0]);
-  throw sc::core::Error("KLU2 " + phase + " failed: " + message +
-                        (phase == "numerical factorisation"
-                             ? " (the matrix is singular to working precision)"
-                             : ""));
+  });
 }
 
 }  // namespace
@@ -160,7 +151,7 @@ void Klu2Solver::doNumericFactorization(const Teuchos::RCP<const CrsMatrix>& A)
     m.solver->numericFactorization();
     nnzLU = static_cast<long long>(m.solver->getStatus().getNnzLU());
   });
-  Teuchos::broadcast(*m.comm, 0, &nnzLU);
+  sc::core::broadcast(*m.comm, 0, nnzLU);
   stats_.factorNonzeros = nnzLU;
 }
 

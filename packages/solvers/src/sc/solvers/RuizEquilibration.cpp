@@ -6,7 +6,7 @@
 #include <climits>
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
+#include "sc/core/Collective.hpp"
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
@@ -25,8 +25,7 @@ void checkNonzero(const Teuchos::Comm<int>& comm, const Map& map,
   for (size_t i = 0; i < map.getNodeNumElements(); ++i)
     if (!(norms[i] > 0.0))
       firstZero = std::min(firstZero, static_cast<long long>(map.getGlobalElement(i)));
-  long long globalFirst = LLONG_MAX;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, firstZero, Teuchos::outArg(globalFirst));
+  const long long globalFirst = sc::core::minOverRanks(comm, firstZero);
   SC_THROW_IF(globalFirst != LLONG_MAX, sc::core::Error,
               "Equilibration: " << what << " with global index " << globalFirst
                                 << " of the linear system is zero: the matrix is singular "
@@ -93,16 +92,15 @@ void RuizEquilibration::compute(const CrsMatrix& A)
       checkNonzero(*comm, *domainMap, colNorm.getData(0), "column");
     }
     // deviation from an equilibrated matrix (all row and column ∞-norms 1)
-    double localDev = 0.0, dev = 0.0;
+    double localDev = 0.0;
     {
       auto rn = rowNorm.getData(0);
       auto cn = colNorm.getData(0);
       for (long i = 0; i < rn.size(); ++i) localDev = std::max(localDev, std::abs(1.0 - rn[i]));
       for (long i = 0; i < cn.size(); ++i) localDev = std::max(localDev, std::abs(1.0 - cn[i]));
     }
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, localDev, Teuchos::outArg(dev));
-    deviation_ = dev;
-    if (dev <= tolerance_) break;
+    deviation_ = sc::core::maxOverRanks(*comm, localDev);
+    if (deviation_ <= tolerance_) break;
     ++iterations_;
 
     auto dr = rowScale_->getDataNonConst(0);
