@@ -21,7 +21,8 @@ constexpr int kMaxPasses = 10000;
 inline double dist2(const double* x, const double* y, int d)
 {
   double s = 0;
-  for (int i = 0; i < d; ++i) s += (x[i] - y[i]) * (x[i] - y[i]);
+  for (int i = 0; i < d; ++i)
+    s += (x[i] - y[i]) * (x[i] - y[i]);
   return s;
 }
 
@@ -40,7 +41,8 @@ BisectionRefiner::BisectionRefiner(Teuchos::RCP<const SimplexMesh> initialMesh,
 {
   const SimplexMesh& m = *initialMesh;
   SC_THROW_IF(!geometry.is_null() && geometry->dim() != dim_, sc::core::InternalError,
-              "BisectionRefiner: geometry of dimension " << geometry->dim() << " for a mesh of dimension " << dim_);
+              "BisectionRefiner: geometry of dimension " << geometry->dim()
+                                                         << " for a mesh of dimension " << dim_);
   partCurved_.resize(names_.size(), 0);
   for (std::size_t i = 0; i < names_.size(); ++i)
     partCurved_[i] = project_ && geometry_->isCurved(names_[i]);
@@ -52,7 +54,8 @@ BisectionRefiner::BisectionRefiner(Teuchos::RCP<const SimplexMesh> initialMesh,
   // Strict global order of edges (length, then vertex ids) so that neighbours choose the same
   // longest edge of a shared face.
   auto longer = [&](int a, int b, int c, int d) {
-    const double l1 = dist2(m.vertex(a), m.vertex(b), dim_), l2 = dist2(m.vertex(c), m.vertex(d), dim_);
+    const double l1 = dist2(m.vertex(a), m.vertex(b), dim_),
+                 l2 = dist2(m.vertex(c), m.vertex(d), dim_);
     if (l1 != l2) return l1 > l2;
     return edgeKey(a, b) > edgeKey(c, d);
   };
@@ -89,8 +92,8 @@ BisectionRefiner::BisectionRefiner(Teuchos::RCP<const SimplexMesh> initialMesh,
         if (longer(y, z, best[0], best[1])) best = {y, z};
         return best;
       };
-      std::array<int, 2> markers[4] = {faceMarker(w[1], w[2], w[3]), faceMarker(w[0], w[2], w[3]),
-                                       {w[0], w[1]}, {w[0], w[1]}};
+      std::array<int, 2> markers[4] = {
+          faceMarker(w[1], w[2], w[3]), faceMarker(w[0], w[2], w[3]), {w[0], w[1]}, {w[0], w[1]}};
       setTetrahedron(e, w, markers, false);
     }
     for (int f : m.boundaryFaces()) {
@@ -145,7 +148,8 @@ void BisectionRefiner::setTetrahedron(int slot, const int w[4], const std::array
 std::array<double, 3> BisectionRefiner::point(int v) const
 {
   std::array<double, 3> x{0, 0, 0};
-  for (int k = 0; k < dim_; ++k) x[k] = coords_[static_cast<std::size_t>(v) * dim_ + k];
+  for (int k = 0; k < dim_; ++k)
+    x[k] = coords_[static_cast<std::size_t>(v) * dim_ + k];
   return x;
 }
 
@@ -157,12 +161,14 @@ int BisectionRefiner::midpoint(int a, int b)
   if (!inserted) return *val;
   std::array<double, 3> x{0, 0, 0};
   for (int k = 0; k < dim_; ++k)
-    x[k] = 0.5 * (coords_[static_cast<std::size_t>(a) * dim_ + k] + coords_[static_cast<std::size_t>(b) * dim_ + k]);
+    x[k] = 0.5 * (coords_[static_cast<std::size_t>(a) * dim_ + k] +
+                  coords_[static_cast<std::size_t>(b) * dim_ + k]);
   if (project_) {
     const int* part = dim_ == 2 ? boundaryEdges_.find(key) : curvedEdges_.find(key);
     if (part && *part >= 0 && partCurved_[*part]) x = geometry_->project(names_[*part], x);
   }
-  for (int k = 0; k < dim_; ++k) coords_.push_back(x[k]);
+  for (int k = 0; k < dim_; ++k)
+    coords_.push_back(x[k]);
   step_->newVertexParents.push_back({std::min(a, b), std::max(a, b)});
   splitEndpoint_.push_back(0);
   splitEndpoint_[a] = splitEndpoint_[b] = 1;
@@ -236,10 +242,10 @@ void BisectionRefiner::bisectTetrahedron(int e)
     }
   }
 
-  const std::array<int, 2> Ma = ma == 0 ? std::array<int, 2>{a, c}
+  const std::array<int, 2> Ma = ma == 0   ? std::array<int, 2>{a, c}
                                 : ma == 1 ? std::array<int, 2>{a, d}
                                           : std::array<int, 2>{c, d};
-  const std::array<int, 2> Mb = mb == 0 ? std::array<int, 2>{b, c}
+  const std::array<int, 2> Mb = mb == 0   ? std::array<int, 2>{b, c}
                                 : mb == 1 ? std::array<int, 2>{b, d}
                                           : std::array<int, 2>{c, d};
   // Marked edge of the new face cdm: cd, except for a flagged planar parent, where it is mc
@@ -269,7 +275,8 @@ const RefinementStep& BisectionRefiner::refine(const std::vector<int>& markedEle
   target_.assign(ne, 0);
   for (int e : markedElements) {
     SC_THROW_IF(e < 0 || e >= ne, sc::core::InternalError,
-                "BisectionRefiner::refine: marked element " << e << " out of range [0, " << ne << ")");
+                "BisectionRefiner::refine: marked element " << e << " out of range [0, " << ne
+                                                            << ")");
     target_[e] = gen_[e] + 1;
   }
   return run();
@@ -279,7 +286,8 @@ const RefinementStep& BisectionRefiner::refineUniformly()
 {
   const int ne = mesh_->numElements();
   target_.resize(ne);
-  for (int e = 0; e < ne; ++e) target_[e] = gen_[e] + dim_;
+  for (int e = 0; e < ne; ++e)
+    target_[e] = gen_[e] + dim_;
   return run();
 }
 
@@ -297,7 +305,8 @@ const RefinementStep& BisectionRefiner::run()
   midpoints_ = HashIndexMap<std::uint64_t>(16);
   splitEndpoint_.assign(nv0, 0);
   std::size_t expected = 0;
-  for (int e = 0; e < ne0; ++e) expected += std::max(0, target_[e] - gen_[e]);
+  for (int e = 0; e < ne0; ++e)
+    expected += std::max(0, target_[e] - gen_[e]);
   verts_.reserve(verts_.size() + (dim_ + 1) * expected * 2);
   midpoints_.reserve(expected * (dim_ == 2 ? 2 : 3));
 
@@ -307,7 +316,8 @@ const RefinementStep& BisectionRefiner::run()
   for (bool changed = true; changed;) {
     changed = false;
     SC_THROW_IF(++passes > kMaxPasses, sc::core::InternalError,
-                origin_ << ": bisection closure did not terminate after " << kMaxPasses << " sweeps");
+                origin_ << ": bisection closure did not terminate after " << kMaxPasses
+                        << " sweeps");
     for (int e = 0; e < static_cast<int>(gen_.size()); ++e)
       while (needsBisection(e)) {
         bisect(e);
@@ -320,11 +330,14 @@ const RefinementStep& BisectionRefiner::run()
   const int ne = static_cast<int>(gen_.size());
   step_->elementParent = ancestor_;
   step_->childrenPtr.assign(ne0 + 1, 0);
-  for (int e = 0; e < ne; ++e) ++step_->childrenPtr[ancestor_[e] + 1];
-  std::partial_sum(step_->childrenPtr.begin(), step_->childrenPtr.end(), step_->childrenPtr.begin());
+  for (int e = 0; e < ne; ++e)
+    ++step_->childrenPtr[ancestor_[e] + 1];
+  std::partial_sum(step_->childrenPtr.begin(), step_->childrenPtr.end(),
+                   step_->childrenPtr.begin());
   step_->children.resize(ne);
   std::vector<int> fill(step_->childrenPtr.begin(), step_->childrenPtr.end() - 1);
-  for (int e = 0; e < ne; ++e) step_->children[fill[ancestor_[e]]++] = e;
+  for (int e = 0; e < ne; ++e)
+    step_->children[fill[ancestor_[e]]++] = e;
 
   if (step_->numBisections > 0) mesh_ = buildMesh();  // nothing marked: keep the same mesh
   step_->secondsBisection = seconds(t0, t1);
@@ -365,38 +378,34 @@ void BisectionRefiner::restore(const State& s, const std::string& source)
   const std::size_t ne = s.elementVertices.size() / (dim_ + 1);
   const int parts = static_cast<int>(names_.size());
   auto bad = [&](const std::string& why) {
-    SC_THROW_IF(true, sc::core::InputError, source << ": the refinement state is inconsistent: " << why);
+    SC_THROW_IF(true, sc::core::InputError,
+                source << ": the refinement state is inconsistent: " << why);
   };
   if (s.dim != dim_)
-    bad("dimension " + std::to_string(s.dim) + ", but the mesh of the deck has dimension " + std::to_string(dim_));
+    bad("dimension " + std::to_string(s.dim) + ", but the mesh of the deck has dimension " +
+        std::to_string(dim_));
   if (s.coordinates.size() % dim_ != 0 || s.elementVertices.size() % (dim_ + 1) != 0 || ne == 0)
     bad("coordinate or element arrays of the wrong length");
-  if (s.generations.size() != ne || (dim_ == 3 && s.codes.size() != ne) || (dim_ == 2 && !s.codes.empty()))
+  if (s.generations.size() != ne || (dim_ == 3 && s.codes.size() != ne) ||
+      (dim_ == 2 && !s.codes.empty()))
     bad("per-element arrays of the wrong length");
   for (int v : s.elementVertices)
-    if (v < 0 || static_cast<std::size_t>(v) >= nv)
-      bad("an element vertex out of range");
+    if (v < 0 || static_cast<std::size_t>(v) >= nv) bad("an element vertex out of range");
   auto partsOk = [&](const std::vector<int>& p, std::size_t n) {
-    if (p.size() != n)
-      bad("boundary arrays of the wrong length");
+    if (p.size() != n) bad("boundary arrays of the wrong length");
     for (int q : p)
-      if (q < -1 || q >= parts)
-        bad("a boundary part id out of range");
+      if (q < -1 || q >= parts) bad("a boundary part id out of range");
   };
   partsOk(s.boundaryEdgeParts, s.boundaryEdges.size());
   partsOk(s.boundaryFaceParts, s.boundaryFaces.size() / 3);
   partsOk(s.curvedEdgeParts, s.curvedEdges.size());
-  if (s.boundaryFaces.size() % 3 != 0)
-    bad("boundary face array of the wrong length");
+  if (s.boundaryFaces.size() % 3 != 0) bad("boundary face array of the wrong length");
   for (std::uint64_t k : s.boundaryEdges)
-    if ((k >> 32) >= nv || (k & 0xffffffffu) >= nv)
-      bad("a boundary edge vertex out of range");
+    if ((k >> 32) >= nv || (k & 0xffffffffu) >= nv) bad("a boundary edge vertex out of range");
   for (std::uint64_t k : s.curvedEdges)
-    if ((k >> 32) >= nv || (k & 0xffffffffu) >= nv)
-      bad("a curved edge vertex out of range");
+    if ((k >> 32) >= nv || (k & 0xffffffffu) >= nv) bad("a curved edge vertex out of range");
   for (int v : s.boundaryFaces)
-    if (v < 0 || static_cast<std::size_t>(v) >= nv)
-      bad("a boundary face vertex out of range");
+    if (v < 0 || static_cast<std::size_t>(v) >= nv) bad("a boundary face vertex out of range");
 
   coords_ = s.coordinates;
   verts_ = s.elementVertices;
@@ -409,8 +418,9 @@ void BisectionRefiner::restore(const State& s, const std::string& source)
     boundaryEdges_.insert(s.boundaryEdges[i], s.boundaryEdgeParts[i]);
   boundaryFaces_ = HashIndexMap<FaceKey>(s.boundaryFaceParts.size());
   for (std::size_t i = 0; i < s.boundaryFaceParts.size(); ++i)
-    boundaryFaces_.insert({s.boundaryFaces[3 * i], s.boundaryFaces[3 * i + 1], s.boundaryFaces[3 * i + 2]},
-                          s.boundaryFaceParts[i]);
+    boundaryFaces_.insert(
+        {s.boundaryFaces[3 * i], s.boundaryFaces[3 * i + 1], s.boundaryFaces[3 * i + 2]},
+        s.boundaryFaceParts[i]);
   curvedEdges_ = HashIndexMap<std::uint64_t>(s.curvedEdges.size());
   for (std::size_t i = 0; i < s.curvedEdges.size(); ++i)
     curvedEdges_.insert(s.curvedEdges[i], s.curvedEdgeParts[i]);

@@ -12,7 +12,8 @@ Teuchos::RCP<SimplexMesh> splitElementsWithAllVerticesOnBoundary(const SimplexMe
     const int c = static_cast<int>(coords.size()) / d;
     for (int k = 0; k < d; ++k) {
       double s = 0;
-      for (int i = 0; i < nve; ++i) s += mesh.vertex(v[i])[k];
+      for (int i = 0; i < nve; ++i)
+        s += mesh.vertex(v[i])[k];
       coords.push_back(s / nve);
     }
     // Child i: the face opposite local vertex i, plus the barycentre in place of vertex i (keeps

@@ -16,7 +16,7 @@ constexpr int kTetEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}
 }  // namespace
 
 CurvedElements::CurvedElements(Teuchos::RCP<const SimplexMesh> mesh, const Geometry& geometry)
-  : mesh_(std::move(mesh))
+    : mesh_(std::move(mesh))
 {
   const SimplexMesh& m = *mesh_;
   SC_THROW_IF(geometry.dim() != m.dim(), core::InternalError,
@@ -29,19 +29,16 @@ CurvedElements::CurvedElements(Teuchos::RCP<const SimplexMesh> mesh, const Geome
     partCurved[i] = geometry.isCurved(m.boundaryName(i)) ? 1 : 0;
   for (int f : m.boundaryFaces()) {
     const int part = m.faceBoundaryId(f);
-    if (part < 0 || !partCurved[part])
-      continue;
+    if (part < 0 || !partCurved[part]) continue;
     const int e = m.faceElements(f)[0];
     const int* fe = m.elementFaces(e);
     const int lf = static_cast<int>(std::find(fe, fe + d + 1, f) - fe);
     // The face opposite local vertex lf holds the element edges without lf.
     for (int s = 0; s < nEdges; ++s) {
       const int* lv = d == 2 ? kTriEdges[s] : kTetEdges[s];
-      if (lv[0] == lf || lv[1] == lf)
-        continue;
+      if (lv[0] == lf || lv[1] == lf) continue;
       const int edge = m.elementEdges(e)[s];
-      if (edgeSlot_[edge] >= 0)
-        continue;
+      if (edgeSlot_[edge] >= 0) continue;
       const double* a = m.vertex(m.edgeVertices(edge)[0]);
       const double* b = m.vertex(m.edgeVertices(edge)[1]);
       std::array<double, 3> mid{0, 0, 0};

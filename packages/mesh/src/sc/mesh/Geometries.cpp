@@ -120,7 +120,8 @@ std::vector<std::string> BoxGeometry::boundaryNames() const
 double BoxGeometry::exactMeasure() const
 {
   double m = 1;
-  for (std::size_t i = 0; i < lower_.size(); ++i) m *= upper_[i] - lower_[i];
+  for (std::size_t i = 0; i < lower_.size(); ++i)
+    m *= upper_[i] - lower_[i];
   return m;
 }
 

@@ -42,8 +42,7 @@ int gmshReaderDies(const std::string& path, unsigned timeLimitSeconds)
 {
   std::fflush(nullptr);
   const pid_t pid = ::fork();
-  if (pid < 0)
-    return 0;  // no child possible: read in this process, unprotected
+  if (pid < 0) return 0;  // no child possible: read in this process, unprotected
   if (pid == 0) {
     // The child: default handlers, so that a crash ends it at once (no sanitizer or fuzzer
     // report from a copy of this process), output discarded, no MPI, no exit handlers.
@@ -73,10 +72,8 @@ int gmshReaderDies(const std::string& path, unsigned timeLimitSeconds)
   }
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR)
-      return 0;
-  if (WIFSIGNALED(status))
-    return WTERMSIG(status);
+    if (errno != EINTR) return 0;
+  if (WIFSIGNALED(status)) return WTERMSIG(status);
   return WIFEXITED(status) ? -WEXITSTATUS(status) : 0;
 }
 
@@ -112,10 +109,12 @@ public:
                           "Mesh/File must name a Gmsh .msh file");
     size_ = static_cast<std::uintmax_t>(st.st_size);
 
-    std::string tmpl = (std::filesystem::temp_directory_path() / "stresscontact-mesh-XXXXXX").string();
+    std::string tmpl =
+        (std::filesystem::temp_directory_path() / "stresscontact-mesh-XXXXXX").string();
     SC_THROW_IF(::mkdtemp(tmpl.data()) == nullptr, sc::core::Error,
-                "cannot create a temporary directory for reading " << origin << ": "
-                    << std::strerror(errno) << " (set TMPDIR to a writable directory)");
+                "cannot create a temporary directory for reading "
+                    << origin << ": " << std::strerror(errno)
+                    << " (set TMPDIR to a writable directory)");
     dir_.path = tmpl;
     path_ = dir_.path + "/mesh.msh";
     std::ofstream copy(path_, std::ios::binary);
@@ -190,8 +189,7 @@ private:
     std::istringstream version(head.substr(first + 1));
     double v = 0;
     version >> v;
-    SC_THROW_IF(!version || !((v >= 2.0 && v < 3.0) || (v >= 4.0 && v < 5.0)),
-                sc::core::InputError,
+    SC_THROW_IF(!version || !((v >= 2.0 && v < 3.0) || (v >= 4.0 && v < 5.0)), sc::core::InputError,
                 origin << " (Mesh/File) has MSH format version '"
                        << head.substr(first + 1, head.find_first_of("\r\n", first + 1) - first - 1)
                        << "'; StressContact reads MSH formats 2.2 and 4.1");
@@ -234,8 +232,8 @@ void checkPhysicalNames(const std::string& path, const std::string& origin, int 
       if (d != dim - 1) continue;
       const auto [it, inserted] = tagOfName.emplace(name, tag);
       SC_THROW_IF(!inserted && it->second != tag, sc::core::InputError,
-                  origin << ": physical groups " << it->second << " and " << tag
-                         << " (dimension " << d << ") are both named '" << name
+                  origin << ": physical groups " << it->second << " and " << tag << " (dimension "
+                         << d << ") are both named '" << name
                          << "'; each boundary part needs a name of its own (merge the groups "
                             "in Gmsh, or rename one)");
     }
@@ -265,21 +263,21 @@ std::string elementTypeName(int type)
 // Nodes of a Gmsh element type and whether StressContact reads it: linear or quadratic simplices
 // of the mesh's dimension (elements) and of one less (boundary faces).
 struct TypeInfo {
-  int nodes = 0;      // nodes per element
-  int vertices = 0;   // of which vertices (listed first)
+  int nodes = 0;     // nodes per element
+  int vertices = 0;  // of which vertices (listed first)
   bool supported = false;
 };
 TypeInfo typeInfo(int type, int dim, bool face)
 {
   const int d = face ? dim - 1 : dim;
   switch (type) {
-    case 1: return {2, 2, d == 1};   // 2-node line
-    case 8: return {3, 2, d == 1};   // 3-node line
-    case 2: return {3, 3, d == 2};   // 3-node triangle
-    case 9: return {6, 3, d == 2};   // 6-node triangle
-    case 4: return {4, 4, d == 3};   // 4-node tetrahedron
-    case 11: return {10, 4, d == 3}; // 10-node tetrahedron
-    default: return {};
+  case 1: return {2, 2, d == 1};    // 2-node line
+  case 8: return {3, 2, d == 1};    // 3-node line
+  case 2: return {3, 3, d == 2};    // 3-node triangle
+  case 9: return {6, 3, d == 2};    // 6-node triangle
+  case 4: return {4, 4, d == 3};    // 4-node tetrahedron
+  case 11: return {10, 4, d == 3};  // 10-node tetrahedron
+  default: return {};
   }
 }
 
@@ -327,7 +325,8 @@ GmshMeshIO::MeshFile extractMesh(int dim, const std::string& origin,
   gmsh::model::mesh::getNodes(allTags, allCoords, params, -1, -1, true, false);
   std::unordered_map<std::size_t, std::size_t> position;  // node tag -> its index in allTags
   position.reserve(allTags.size());
-  for (std::size_t i = 0; i < allTags.size(); ++i) position.emplace(allTags[i], i);
+  for (std::size_t i = 0; i < allTags.size(); ++i)
+    position.emplace(allTags[i], i);
   std::vector<double> coords(usedTags.size() * dim, std::nan(""));
   // A coordinate "nan" or "inf" in the file (Gmsh's reader accepts both) is refused before any
   // arithmetic: it would make every measure and check of the mesh NaN.
@@ -342,11 +341,13 @@ GmshMeshIO::MeshFile extractMesh(int dim, const std::string& origin,
   double extent = 0;
   for (std::size_t i = 0; i < allTags.size(); ++i)
     if (index.count(allTags[i]))
-      for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(allCoords[3 * i + k]));
+      for (int k = 0; k < 3; ++k)
+        extent = std::max(extent, std::abs(allCoords[3 * i + k]));
   for (std::size_t i = 0; i < allTags.size(); ++i) {
     auto it = index.find(allTags[i]);
     if (it == index.end()) continue;
-    for (int k = 0; k < dim; ++k) coords[static_cast<std::size_t>(it->second) * dim + k] = allCoords[3 * i + k];
+    for (int k = 0; k < dim; ++k)
+      coords[static_cast<std::size_t>(it->second) * dim + k] = allCoords[3 * i + k];
     SC_THROW_IF(dim == 2 && std::abs(allCoords[3 * i + 2]) > 1e-10 * std::max(extent, 1.0),
                 sc::core::InputError,
                 origin << ": node " << allTags[i] << " has z = " << allCoords[3 * i + 2]
@@ -373,12 +374,11 @@ GmshMeshIO::MeshFile extractMesh(int dim, const std::string& origin,
       std::string name;
       gmsh::model::getPhysicalName(gd, gtag, name);
       const auto clash = named.find(std::to_string(gtag));
-      SC_THROW_IF(name.empty() && clash != named.end() && clash->second != gtag,
-                  sc::core::InputError,
-                  origin << ": physical group " << gtag << " has no name, so it is called '"
-                         << gtag << "', but physical group " << clash->second
-                         << " is named '" << clash->first
-                         << "' too; name group " << gtag << " or rename group " << clash->second);
+      SC_THROW_IF(
+          name.empty() && clash != named.end() && clash->second != gtag, sc::core::InputError,
+          origin << ": physical group " << gtag << " has no name, so it is called '" << gtag
+                 << "', but physical group " << clash->second << " is named '" << clash->first
+                 << "' too; name group " << gtag << " or rename group " << clash->second);
     }
   }
   std::vector<std::string> names = partOrder;
@@ -418,7 +418,8 @@ GmshMeshIO::MeshFile extractMesh(int dim, const std::string& origin,
             SC_THROW_IF(p == position.end(), sc::core::InputError,
                         origin << ": boundary element " << fTags[t][e] << " of physical group '"
                                << name << "' uses node " << n[i] << ", which has no coordinates");
-            for (int k = 0; k < 3; ++k) x[3 * i + k] = allCoords[3 * p->second + k];
+            for (int k = 0; k < 3; ++k)
+              x[3 * i + k] = allCoords[3 * p->second + k];
             SC_THROW_IF(!(std::isfinite(x[3 * i]) && std::isfinite(x[3 * i + 1]) &&
                           std::isfinite(x[3 * i + 2])),
                         sc::core::InputError,
@@ -444,9 +445,8 @@ GmshMeshIO::MeshFile extractMesh(int dim, const std::string& origin,
   result.mesh = Teuchos::rcp(new SimplexMesh(dim, std::move(coords), std::move(elemVerts), bfv,
                                              bpart, names, origin, &labels));
   // Parts as the mesh names them (a mesh adds 'Unnamed' for faces in no group: flat, no faces).
-  result.boundary = Teuchos::rcp(new MeshBoundaryGeometry(dim, result.mesh->boundaryNames(),
-                                                          std::move(boundaryNodes), bpart, origin,
-                                                          &boundaryTags));
+  result.boundary = Teuchos::rcp(new MeshBoundaryGeometry(
+      dim, result.mesh->boundaryNames(), std::move(boundaryNodes), bpart, origin, &boundaryTags));
   return result;
 }
 
@@ -470,15 +470,16 @@ void buildGeometryModel(const Geometry& geometry, double meshSize)
   for (std::size_t i = 0; i < names.size(); ++i) {
     auto it = byName.find(names[i]);
     SC_THROW_IF(it == byName.end(), sc::core::InternalError,
-                geometry.sceneName() << ": Gmsh model has no boundary entity for '" << names[i]
-                                     << "'");
+                geometry.sceneName()
+                    << ": Gmsh model has no boundary entity for '" << names[i] << "'");
     const int g = gmsh::model::addPhysicalGroup(dim - 1, it->second, static_cast<int>(i) + 1);
     gmsh::model::setPhysicalName(dim - 1, g, names[i]);
   }
   gmsh::vectorpair dents;
   gmsh::model::getEntities(dents, dim);
   std::vector<int> dtags;
-  for (const auto& p : dents) dtags.push_back(p.second);
+  for (const auto& p : dents)
+    dtags.push_back(p.second);
   const int g = gmsh::model::addPhysicalGroup(dim, dtags, 100);
   gmsh::model::setPhysicalName(dim, g, "Domain");
   // The size is MeshSizeMax alone: OpenCASCADE points carry default sizes (about a tenth of the

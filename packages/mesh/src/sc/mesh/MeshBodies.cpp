@@ -34,11 +34,9 @@ std::vector<MeshBody> meshBodies(const SimplexMesh& m)
   };
   for (int f = 0; f < m.numFaces(); ++f) {
     const auto el = m.faceElements(f);
-    if (el[1] < 0)
-      continue;
+    if (el[1] < 0) continue;
     const int a = root(el[0]), b = root(el[1]);
-    if (a != b)
-      parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest element
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the root is the lowest element
   }
   std::vector<int> bodyOfRoot(ne, -1);
   std::vector<MeshBody> bodies;
@@ -60,8 +58,7 @@ std::vector<MeshBody> meshBodies(const SimplexMesh& m)
       for (int c = 0; c < d; ++c)
         b.lo[c] = std::min(b.lo[c], p[c]), b.hi[c] = std::max(b.hi[c], p[c]);
       const int f = m.elementFaces(e)[i];
-      if (m.isBoundaryFace(f))
-        ids[bodyOfRoot[r]].insert(m.faceBoundaryId(f));
+      if (m.isBoundaryFace(f)) ids[bodyOfRoot[r]].insert(m.faceBoundaryId(f));
     }
   }
   for (std::size_t i = 0; i < bodies.size(); ++i)

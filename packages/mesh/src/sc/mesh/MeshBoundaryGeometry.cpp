@@ -92,11 +92,11 @@ struct MeshBoundaryGeometry::Bins {
 };
 
 MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> names,
-                                           std::vector<double> faceNodes,
-                                           std::vector<int> facePart, std::string origin,
+                                           std::vector<double> faceNodes, std::vector<int> facePart,
+                                           std::string origin,
                                            const std::vector<std::size_t>* faceLabels)
-    : dim_(dim), names_(std::move(names)), nodes_(std::move(faceNodes)),
-      part_(std::move(facePart)), origin_(std::move(origin))
+    : dim_(dim), names_(std::move(names)), nodes_(std::move(faceNodes)), part_(std::move(facePart)),
+      origin_(std::move(origin))
 {
   const int nn = nodesPerFace(dim_);
   const int nf = static_cast<int>(part_.size());
@@ -112,7 +112,8 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
     os << "the boundary face of physical group '" << names_[part_[f]] << "'";
     if (faceLabels) {
       os << " with nodes";
-      for (int i = 0; i < nn; ++i) os << (i ? ", " : " ") << (*faceLabels)[static_cast<std::size_t>(f) * nn + i];
+      for (int i = 0; i < nn; ++i)
+        os << (i ? ", " : " ") << (*faceLabels)[static_cast<std::size_t>(f) * nn + i];
     }
     return os.str();
   };
@@ -127,7 +128,8 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
       const Point chord = sub(b, a);
       const double length = norm(chord);
       size = std::max(size, length);
-      const Point offset = sub(m, Point{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])});
+      const Point offset =
+          sub(m, Point{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])});
       const double bulge = norm(offset);
       inflate[f] += bulge;
       if (bulge > 1e-10 * length) {
@@ -142,8 +144,8 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
       // direction at both ends: the midpoint node's position along the chord in (1/4, 3/4).
       const double along = dot(sub(m, a), chord) / (length * length);
       SC_THROW_IF(!(length > 0) || !(along > 0.25 && along < 0.75), core::InputError,
-                  origin_ << ": " << faceName(f) << " folds: its mid-edge node lies at "
-                          << along << " of its chord, outside (0.25, 0.75), so the quadratic "
+                  origin_ << ": " << faceName(f) << " folds: its mid-edge node lies at " << along
+                          << " of its chord, outside (0.25, 0.75), so the quadratic "
                           << "map of the face is not invertible. Remesh the part (finer, or "
                           << "with Gmsh's high-order optimisation).");
     }
@@ -159,7 +161,8 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
         tri6(q[0], q[1], N, Nr, Ns);
         Point xr{0, 0, 0}, xs{0, 0, 0};
         for (int i = 0; i < 6; ++i)
-          for (int k = 0; k < 3; ++k) xr[k] += Nr[i] * node(f, i)[k], xs[k] += Ns[i] * node(f, i)[k];
+          for (int k = 0; k < 3; ++k)
+            xr[k] += Nr[i] * node(f, i)[k], xs[k] += Ns[i] * node(f, i)[k];
         SC_THROW_IF(!(dot(cross(xr, xs), n0) > 0), core::InputError,
                     origin_ << ": " << faceName(f) << " folds: its quadratic patch turns over "
                             << "at reference point (" << q[0] << ", " << q[1] << "). Remesh the "
@@ -196,12 +199,14 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
       long long c0[3], c1[3];
       for (int k = 0; k < 3; ++k) {
         double flo = 1e300, fhi = -1e300;
-        for (int i = 0; i < nn; ++i) flo = std::min(flo, node(f, i)[k]), fhi = std::max(fhi, node(f, i)[k]);
+        for (int i = 0; i < nn; ++i)
+          flo = std::min(flo, node(f, i)[k]), fhi = std::max(fhi, node(f, i)[k]);
         c0[k] = bins->cell(flo - inflate[f], k), c1[k] = bins->cell(fhi + inflate[f], k);
       }
       for (long long i = c0[0]; i <= c1[0]; ++i)
         for (long long j = c0[1]; j <= c1[1]; ++j)
-          for (long long k = c0[2]; k <= c1[2]; ++k) bins->cells[bins->key(i, j, k)].push_back(f);
+          for (long long k = c0[2]; k <= c1[2]; ++k)
+            bins->cells[bins->key(i, j, k)].push_back(f);
     }
     bins_[p] = bins;
   }
@@ -223,7 +228,8 @@ MeshBoundaryGeometry::MeshBoundaryGeometry(int dim, std::vector<std::string> nam
          << " degrees): the body is the polygon of the file and stays so under refinement, so "
          << "a curved part converges to its polygon, not to the curved body. Give a second-order "
          << "mesh (6-node triangles / 10-node tetrahedra) or the Gmsh geometry (Mesh/Source = "
-         << "'Gmsh geometry') if the part is curved (docs/mesh.md \"Curved boundaries from files\")";
+         << "'Gmsh geometry') if the part is curved (docs/mesh.md \"Curved boundaries from "
+            "files\")";
       warning_ = os.str();
     }
   }
@@ -295,7 +301,8 @@ double MeshBoundaryGeometry::maxKinkAngleDegrees(int part) const
   return worst * 180.0 / M_PI;
 }
 
-std::array<double, 3> MeshBoundaryGeometry::closestOnFace(int f, const Point& x, double& dist2) const
+std::array<double, 3> MeshBoundaryGeometry::closestOnFace(int f, const Point& x,
+                                                          double& dist2) const
 {
   const int nn = nodesPerFace(dim_);
   const double* P = &nodes_[static_cast<std::size_t>(f) * nn * 3];
@@ -310,7 +317,8 @@ std::array<double, 3> MeshBoundaryGeometry::closestOnFace(int f, const Point& x,
       X = dX = d2X = Point{0, 0, 0};
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k)
-          X[k] += N[i] * P[3 * i + k], dX[k] += dN[i] * P[3 * i + k], d2X[k] += d2N[i] * P[3 * i + k];
+          X[k] += N[i] * P[3 * i + k], dX[k] += dN[i] * P[3 * i + k],
+              d2X[k] += d2N[i] * P[3 * i + k];
     };
     Point X, dX, d2X;
     for (int it = 0; it < 30; ++it) {
@@ -329,7 +337,7 @@ std::array<double, 3> MeshBoundaryGeometry::closestOnFace(int f, const Point& x,
   }
   // 3D: projected Newton on the patch's (r, s) from the flat triangle's closest point.
   const Point v0{P[0], P[1], P[2]}, e1 = sub(Point{P[3], P[4], P[5]}, v0),
-              e2 = sub(Point{P[6], P[7], P[8]}, v0);
+                                    e2 = sub(Point{P[6], P[7], P[8]}, v0);
   const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2);
   const double b1 = dot(sub(x, v0), e1), b2 = dot(sub(x, v0), e2), det = a11 * a22 - a12 * a12;
   double r = (a22 * b1 - a12 * b2) / det, s = (a11 * b2 - a12 * b1) / det;
@@ -365,7 +373,8 @@ std::array<double, 3> MeshBoundaryGeometry::closestOnFace(int f, const Point& x,
   tri6(r, s, N, Nr, Ns);
   X = Point{0, 0, 0};
   for (int i = 0; i < 6; ++i)
-    for (int k = 0; k < 3; ++k) X[k] += N[i] * P[3 * i + k];
+    for (int k = 0; k < 3; ++k)
+      X[k] += N[i] * P[3 * i + k];
   dist2 = dot(sub(X, x), sub(X, x));
   return X;
 }
@@ -385,7 +394,8 @@ std::array<double, 3> MeshBoundaryGeometry::project(const std::string& boundaryN
   };
   // The cells around x first: a face outside them is farther than one cell from x.
   long long c[3];
-  for (int k = 0; k < 3; ++k) c[k] = bins.cell(x[k], k);
+  for (int k = 0; k < 3; ++k)
+    c[k] = bins.cell(x[k], k);
   std::vector<int> seen;
   for (long long i = c[0] - 1; i <= c[0] + 1; ++i)
     for (long long j = c[1] - 1; j <= c[1] + 1; ++j)
@@ -396,7 +406,8 @@ std::array<double, 3> MeshBoundaryGeometry::project(const std::string& boundaryN
           if (std::find(seen.begin(), seen.end(), f) == seen.end()) seen.push_back(f), consider(f);
       }
   if (!(best <= bins.size * bins.size))
-    for (int f : bins.faces) consider(f);
+    for (int f : bins.faces)
+      consider(f);
   return closest;
 }
 

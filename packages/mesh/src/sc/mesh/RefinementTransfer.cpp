@@ -19,9 +19,8 @@ std::vector<double> prolongVertexField(const RefinementStep& step, const std::ve
   for (std::size_t i = 0; i < step.newVertexParents.size(); ++i) {
     const auto [a, b] = step.newVertexParents[i];
     for (int c = 0; c < components; ++c)
-      out[nOld + i * components + c] =
-          0.5 * (out[static_cast<std::size_t>(a) * components + c] +
-                 out[static_cast<std::size_t>(b) * components + c]);
+      out[nOld + i * components + c] = 0.5 * (out[static_cast<std::size_t>(a) * components + c] +
+                                              out[static_cast<std::size_t>(b) * components + c]);
   }
   return out;
 }
@@ -36,7 +35,8 @@ std::vector<double> prolongElementField(const RefinementStep& step, const std::v
   std::vector<double> out(step.elementParent.size() * components);
   for (std::size_t e = 0; e < step.elementParent.size(); ++e)
     for (int c = 0; c < components; ++c)
-      out[e * components + c] = old[static_cast<std::size_t>(step.elementParent[e]) * components + c];
+      out[e * components + c] =
+          old[static_cast<std::size_t>(step.elementParent[e]) * components + c];
   return out;
 }
 

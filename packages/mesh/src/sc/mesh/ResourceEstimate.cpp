@@ -21,7 +21,8 @@ double sceneMeasure(const Teuchos::ParameterList& p, int dimension)
     const auto lo = p.get<Teuchos::Array<double>>("Lower corner");
     const auto hi = p.get<Teuchos::Array<double>>("Upper corner");
     double m = 1.0;
-    for (int i = 0; i < dimension && i < static_cast<int>(lo.size()); ++i) m *= std::abs(hi[i] - lo[i]);
+    for (int i = 0; i < dimension && i < static_cast<int>(lo.size()); ++i)
+      m *= std::abs(hi[i] - lo[i]);
     return m;
   }
   return -1.0;  // Gmsh file: its element count is known once read
@@ -39,9 +40,9 @@ double dofsPerElement(int d, int k)
   const double V = d == 2 ? 0.5 : 1.0 / 5.5, E = d == 2 ? 1.5 : 1.2 + V, F = d == 2 ? 1.0 : 2.0;
   double stressRow, disp, rot;
   if (d == 2) {
-    stressRow = (k + 1) * E + k * (k + 1);                        // RT_k: k+1 per edge
-    disp = 2.0 * (k + 1) * (k + 2) / 2.0;                          // DP_k, 2 components
-    rot = V + (k - 1) * E + (k - 1) * (k - 2) / 2.0;               // CP_k, 1 component
+    stressRow = (k + 1) * E + k * (k + 1);            // RT_k: k+1 per edge
+    disp = 2.0 * (k + 1) * (k + 2) / 2.0;             // DP_k, 2 components
+    rot = V + (k - 1) * E + (k - 1) * (k - 2) / 2.0;  // CP_k, 1 component
     return 2.0 * stressRow + disp + rot;
   }
   stressRow = (k + 1) * (k + 2) / 2.0 * F + k * (k + 1) * (k + 2) / 2.0;
@@ -106,8 +107,7 @@ std::string gb(double bytes)
 
 std::string ResourceLimit::source() const
 {
-  if (!(baselineBytes > 0.0))
-    return memorySource;
+  if (!(baselineBytes > 0.0)) return memorySource;
   std::ostringstream os;
   os << memorySource << ", of which the program held " << gb(baselineBytes)
      << " before the mesh (VmRSS, " << ranks << (ranks == 1 ? " rank)" : " ranks)");
@@ -118,9 +118,10 @@ std::string ResourceLimit::describe(double elements) const
 {
   std::ostringstream os;
   os.precision(2);
-  os << "about " << elements << (dimension == 2 ? " triangles, " : " tetrahedra, ") << dofs(elements)
-     << " DOFs (degree " << degree << ") and " << gb(totalBytes(elements)) << " of memory ("
-     << bytesPerDof(dimension) / 1e3 << " kB per DOF for the system and MUMPS factors, measured in "
+  os << "about " << elements << (dimension == 2 ? " triangles, " : " tetrahedra, ")
+     << dofs(elements) << " DOFs (degree " << degree << ") and " << gb(totalBytes(elements))
+     << " of memory (" << bytesPerDof(dimension) / 1e3
+     << " kB per DOF for the system and MUMPS factors, measured in "
      << "docs/benchmarks.md" << (baselineBytes > 0.0 ? ", and the program's own memory" : "")
      << "), above the memory limit of " << gb(memoryBytes) << " (" << source() << ")";
   if (maxDofs > 0 && dofs(elements) > static_cast<double>(maxDofs))
@@ -144,7 +145,8 @@ ResourceLimit makeResourceLimit(double limitGB, int dimension, int degree, int r
     if (limitGB * 1e9 <= baselineBytes) {
       const double suggestion = std::ceil((baselineBytes + 0.5e9) / 1e8) / 10.0;
       SC_THROW_IF(true, sc::core::InputError,
-                  "'Mesh/Memory limit (GB)' = " << limitGB << " is below the memory the program "
+                  "'Mesh/Memory limit (GB)' = "
+                      << limitGB << " is below the memory the program "
                       << "holds before any mesh is made: " << gb(baselineBytes)
                       << " (VmRSS of /proc/self/status, summed over the " << ranks
                       << (ranks == 1 ? " rank" : " ranks") << ": libraries, MPI, Kokkos). The "

@@ -16,7 +16,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 inline void sub(const double* a, const double* b, int d, double* out)
 {
-  for (int i = 0; i < d; ++i) out[i] = a[i] - b[i];
+  for (int i = 0; i < d; ++i)
+    out[i] = a[i] - b[i];
 }
 inline std::array<double, 3> cross(const double* a, const double* b)
 {
@@ -25,7 +26,8 @@ inline std::array<double, 3> cross(const double* a, const double* b)
 inline double norm(const double* a, int d)
 {
   double s = 0;
-  for (int i = 0; i < d; ++i) s += a[i] * a[i];
+  for (int i = 0; i < d; ++i)
+    s += a[i] * a[i];
   return std::sqrt(s);
 }
 
@@ -60,7 +62,8 @@ SimplexMesh::SimplexMesh(int dim, std::vector<double> coordinates, std::vector<i
   buildEdges();
   boundaryVertex_.assign(numVertices(), 0);
   for (int f : boundaryFaces_)
-    for (int i = 0; i < dim_; ++i) boundaryVertex_[faceVertices(f)[i]] = 1;
+    for (int i = 0; i < dim_; ++i)
+      boundaryVertex_[faceVertices(f)[i]] = 1;
   labels_ = nullptr;
 }
 
@@ -84,7 +87,8 @@ std::vector<int> SimplexMesh::elementsWithAllVerticesOnBoundary() const
   for (int e = 0; e < numElements(); ++e) {
     const int* v = elementVertices(e);
     bool all = true;
-    for (int i = 0; i <= dim_; ++i) all = all && boundaryVertex_[v[i]];
+    for (int i = 0; i <= dim_; ++i)
+      all = all && boundaryVertex_[v[i]];
     if (all) out.push_back(e);
   }
   return out;
@@ -97,7 +101,8 @@ void SimplexMesh::buildEdges()
     edgeVerts_ = faceVerts_;
     elemEdges_.resize(static_cast<std::size_t>(ne) * 3);
     for (int e = 0; e < ne; ++e)
-      for (int s = 0; s < 3; ++s) elemEdges_[3 * static_cast<std::size_t>(e) + s] = sideFace(e, s);
+      for (int s = 0; s < 3; ++s)
+        elemEdges_[3 * static_cast<std::size_t>(e) + s] = sideFace(e, s);
     return;
   }
   constexpr int pairs[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
@@ -106,7 +111,8 @@ void SimplexMesh::buildEdges()
   for (int e = 0; e < ne; ++e) {
     const int* v = elementVertices(e);
     for (int k = 0; k < 6; ++k) {
-      const int a = std::min(v[pairs[k][0]], v[pairs[k][1]]), b = std::max(v[pairs[k][0]], v[pairs[k][1]]);
+      const int a = std::min(v[pairs[k][0]], v[pairs[k][1]]),
+                b = std::max(v[pairs[k][0]], v[pairs[k][1]]);
       auto [val, inserted] = map.insert(edgeKey(a, b), numEdges());
       if (inserted) edgeVerts_.insert(edgeVerts_.end(), {a, b});
       elemEdges_[6 * static_cast<std::size_t>(e) + k] = *val;
@@ -133,7 +139,8 @@ std::string SimplexMesh::describeElement(int e) const
   const int* v = elementVertices(e);
   for (int i = 0; i <= dim_; ++i) {
     os << (i ? ", " : "") << vertexLabel(v[i]) << " (";
-    for (int k = 0; k < dim_; ++k) os << (k ? ", " : "") << vertex(v[i])[k];
+    for (int k = 0; k < dim_; ++k)
+      os << (k ? ", " : "") << vertex(v[i])[k];
     os << ")";
   }
   os << ")";
@@ -146,7 +153,8 @@ std::string SimplexMesh::describeFace(const int* v) const
   os << (dim_ == 2 ? "edge" : "face") << " (";
   for (int i = 0; i < dim_; ++i) {
     os << (i ? ", " : "") << vertexLabel(v[i]) << " (";
-    for (int k = 0; k < dim_; ++k) os << (k ? ", " : "") << vertex(v[i])[k];
+    for (int k = 0; k < dim_; ++k)
+      os << (k ? ", " : "") << vertex(v[i])[k];
     os << ")";
   }
   os << ")";
@@ -165,7 +173,8 @@ void SimplexMesh::orientAndMeasureElements()
       for (int j = i + 1; j < nve; ++j) {
         double d[3], s = 0;
         sub(vertex(v[i]), vertex(v[j]), dim_, d);
-        for (int k = 0; k < dim_; ++k) s += d[k] * d[k];
+        for (int k = 0; k < dim_; ++k)
+          s += d[k] * d[k];
         diam2 = std::max(diam2, s);
       }
     const double diam = std::sqrt(diam2);
@@ -253,7 +262,8 @@ void SimplexMesh::buildFaces()
       const auto c = cross(a, b);
       const double len = norm(c.data(), 3);
       meas = 0.5 * len;
-      for (int k = 0; k < 3; ++k) n[k] = c[k] / len;
+      for (int k = 0; k < 3; ++k)
+        n[k] = c[k] / len;
     }
     // Orient away from the vertex of element faceElems_[f][0] opposite this face.
     const int e = faceElems_[f][0];
@@ -263,11 +273,14 @@ void SimplexMesh::buildFaces()
     double d[3];
     sub(vertex(ev[local]), vertex(fv[0]), dim_, d);
     double s = 0;
-    for (int k = 0; k < dim_; ++k) s += n[k] * d[k];
+    for (int k = 0; k < dim_; ++k)
+      s += n[k] * d[k];
     if (s > 0)
-      for (int k = 0; k < dim_; ++k) n[k] = -n[k];
+      for (int k = 0; k < dim_; ++k)
+        n[k] = -n[k];
     faceMeasure_[f] = meas;
-    for (int k = 0; k < dim_; ++k) faceNormal_[static_cast<std::size_t>(f) * dim_ + k] = n[k];
+    for (int k = 0; k < dim_; ++k)
+      faceNormal_[static_cast<std::size_t>(f) * dim_ + k] = n[k];
   }
 }
 
@@ -286,11 +299,12 @@ void SimplexMesh::checkFolds() const
     sub(vertex(elementVertices(e1)[local]), vertex(fv[0]), dim_, d);
     const auto n = faceNormal(f);
     double s = 0;
-    for (int k = 0; k < dim_; ++k) s += n[k] * d[k];
+    for (int k = 0; k < dim_; ++k)
+      s += n[k] * d[k];
     SC_THROW_IF(!(s > 0), sc::core::InputError,
-                origin_ << ": inverted or overlapping elements: " << describeElement(faceElems_[f][0])
-                        << " and " << describeElement(e1) << " lie on the same side of their common "
-                        << describeFace(fv));
+                origin_ << ": inverted or overlapping elements: "
+                        << describeElement(faceElems_[f][0]) << " and " << describeElement(e1)
+                        << " lie on the same side of their common " << describeFace(fv));
   }
 }
 
@@ -303,7 +317,8 @@ void SimplexMesh::assignBoundaryParts(const std::vector<int>& bfv, const std::ve
   // Lookup of the listed faces among the mesh faces by key.
   std::vector<int> faceOf(bpart.size(), -1);
   std::size_t nb = 0;
-  for (int f = 0; f < nf; ++f) nb += isBoundaryFace(f);
+  for (int f = 0; f < nf; ++f)
+    nb += isBoundaryFace(f);
   if (dim_ == 2) {
     HashIndexMap<std::uint64_t> map(nb);
     for (int f = 0; f < nf; ++f)
@@ -389,10 +404,12 @@ void SimplexMesh::checkHangingNodes() const
       double av[3];
       sub(vertex(v), xa, dim_, av);
       double t = 0;
-      for (int i = 0; i < dim_; ++i) t += av[i] * ab[i];
+      for (int i = 0; i < dim_; ++i)
+        t += av[i] * ab[i];
       t /= ab2;
       double dist2 = 0;
-      for (int i = 0; i < dim_; ++i) dist2 += std::pow(av[i] - t * ab[i], 2);
+      for (int i = 0; i < dim_; ++i)
+        dist2 += std::pow(av[i] - t * ab[i], 2);
       SC_THROW_IF(t > 1e-8 && t < 1 - 1e-8 && dist2 < 1e-16 * ab2, sc::core::InputError,
                   origin_ << ": non-conforming mesh: hanging node: " << vertexLabel(v)
                           << " lies inside the edge (" << vertexLabel(a) << ", " << vertexLabel(b)
@@ -405,18 +422,21 @@ void SimplexMesh::buildVertexElements()
 {
   const int nv = numVertices(), ne = numElements(), nve = dim_ + 1;
   vertElemPtr_.assign(nv + 1, 0);
-  for (int v : elemVerts_) ++vertElemPtr_[v + 1];
+  for (int v : elemVerts_)
+    ++vertElemPtr_[v + 1];
   std::partial_sum(vertElemPtr_.begin(), vertElemPtr_.end(), vertElemPtr_.begin());
   vertElems_.resize(elemVerts_.size());
   std::vector<int> fill(vertElemPtr_.begin(), vertElemPtr_.end() - 1);
   for (int e = 0; e < ne; ++e)
-    for (int i = 0; i < nve; ++i) vertElems_[fill[elemVerts_[static_cast<std::size_t>(e) * nve + i]]++] = e;
+    for (int i = 0; i < nve; ++i)
+      vertElems_[fill[elemVerts_[static_cast<std::size_t>(e) * nve + i]]++] = e;
 }
 
 std::array<double, 3> SimplexMesh::faceNormal(int f) const
 {
   std::array<double, 3> n{0, 0, 0};
-  for (int k = 0; k < dim_; ++k) n[k] = faceNormal_[static_cast<std::size_t>(f) * dim_ + k];
+  for (int k = 0; k < dim_; ++k)
+    n[k] = faceNormal_[static_cast<std::size_t>(f) * dim_ + k];
   return n;
 }
 
@@ -426,7 +446,8 @@ int SimplexMesh::boundaryId(const std::string& name) const
   if (it == boundaryNames_.end()) {
     std::ostringstream os;
     os << origin_ << ": unknown boundary name '" << name << "'; valid names:";
-    for (const auto& n : boundaryNames_) os << " '" << n << "'";
+    for (const auto& n : boundaryNames_)
+      os << " '" << n << "'";
     throw sc::core::InputError(os.str());
   }
   return static_cast<int>(it - boundaryNames_.begin());
@@ -449,7 +470,8 @@ std::vector<int> SimplexMesh::boundaryFacesOf(const std::string& name) const
 double SimplexMesh::boundaryMeasure(const std::string& name) const
 {
   double s = 0;
-  for (int f : boundaryFacesOf(name)) s += faceMeasure_[f];
+  for (int f : boundaryFacesOf(name))
+    s += faceMeasure_[f];
   return s;
 }
 
@@ -497,7 +519,8 @@ std::vector<double> SimplexMesh::elementAnglesDeg(int e) const
     auto c = cross(a, b);
     const double len = norm(c.data(), 3);
     const double s = (c[0] * d[0] + c[1] * d[1] + c[2] * d[2]) > 0 ? -1.0 : 1.0;
-    for (int i = 0; i < 3; ++i) n[k][i] = s * c[i] / len;
+    for (int i = 0; i < 3; ++i)
+      n[k][i] = s * c[i] / len;
   }
   // Dihedral angle at edge (i, j) is pi minus the angle between the outward normals of the two
   // faces containing the edge (those opposite the other two vertices k, l).
@@ -506,8 +529,8 @@ std::vector<double> SimplexMesh::elementAnglesDeg(int e) const
     int kl[2], j = 0;
     for (int i = 0; i < 4; ++i)
       if (i != ed[0] && i != ed[1]) kl[j++] = i;
-    const double c = -(n[kl[0]][0] * n[kl[1]][0] + n[kl[0]][1] * n[kl[1]][1] +
-                       n[kl[0]][2] * n[kl[1]][2]);
+    const double c =
+        -(n[kl[0]][0] * n[kl[1]][0] + n[kl[0]][1] * n[kl[1]][1] + n[kl[0]][2] * n[kl[1]][2]);
     out.push_back(std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / kPi);
   }
   return out;
@@ -517,7 +540,8 @@ double SimplexMesh::minAngleDeg() const
 {
   double m = 180.0;
   for (int e = 0; e < numElements(); ++e)
-    for (double a : elementAnglesDeg(e)) m = std::min(m, a);
+    for (double a : elementAnglesDeg(e))
+      m = std::min(m, a);
   return m;
 }
 
