@@ -130,6 +130,8 @@ private:
   /// The stress-block multigrid levels for this cycle's space (empty without hierarchy_).
   std::vector<solvers::MultigridLevel> multigridLevels();
   void solveContact();
+  /// After a contact solve with no point in contact: a warning (once per run).
+  void warnIfNoContact();
   /// The solved cycle's DOFs, linear solver and contact state (with the Hertz comparison) into
   /// *results_.
   void recordSolve();
@@ -172,6 +174,7 @@ private:
   int loadStep_ = 0;
   /// The loop of the load steps after the first (Load steps/Cycles per later step cycles).
   std::unique_ptr<adapt::AdaptiveLoop> laterStepLoop_;
+  bool warnedNoContact_ = false;
   int lastCycle_ = -1;  ///< the last cycle output (numbered through the load steps)
   /// The frictionless Hertz scenes (Mesh/Source = Half disc or Half ball): their radius, for the
   /// comparison with Hertz's values; none otherwise.
