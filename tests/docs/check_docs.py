@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Consistency checks between the documentation, the input decks and the tests' stored values.
 
-    check_docs.py --root DIR [--check decks,main-job]     (default: decks and main-job)
+    check_docs.py --root DIR [--check decks,main-job,main-numbers]   (default: these three)
     check_docs.py --root DIR --check issue-numbers
 
 Checks (each finding is printed as FILE:LINE: message; exit status 1 if there is any):
@@ -18,6 +18,17 @@ main-job       README.md and docs/user-guide.md: a sentence about the main job (
                "cycle N/M" in a section about the main job, must agree with the Adaptivity/Cycles
                of input/hertz2d.xml; the user guide's table of shipped decks must give each deck's
                Marking and Cycles.
+main-numbers   the numbers README.md quotes for the main job against the values that the test
+               run_hertz2d_main_job stores in tests/CMakeLists.txt (its CHECKS, which that test
+               asserts against a run of input/hertz2d.xml at 1 and 4 ranks): each row of the
+               table under the heading about the main job that names summary.json keys in
+               backquotes (`dofs.total`, `contact.force[1]`) and gives one number per key (text in
+               parentheses is a remark and not read), and in the progress lines of the main job's
+               last cycle ("cycle 16/16") the DOFs, eta and its parts, the force, half-width, peak
+               pressure, stick zone, point counts, Newton steps and element count. A quoted
+               number must round to the stored value at the precision it is written with; a
+               quoted quantity that the test does not store is a finding too, so that every
+               number of the main job's documented result is one the test asserts.
 issue-numbers  no file under docs/, packages/, apps/, tests/ or README.md cites an issue tracker
                number (the word issue, a space, a hash sign and a digit): the repository is read
                without the tracker.
@@ -280,6 +291,144 @@ def check_deck_table(root, path, text, findings):
                              f"Marking = {actual[0]}, Cycles = {actual[1]}")
 
 
+# --- the main job's numbers in README.md against run_hertz2d_main_job's stored values ----------
+
+MAIN_TEST = "run_hertz2d_main_job"
+SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+# 49,021  0.07548  3.779·10⁻³  4.96757e-07  108.125
+NUMBER = re.compile(r"(?<![\w.])[-−]?(\d{1,3}(?:,\d{3})+(?![\d])|\d+(?:\.\d+)?)"
+                    r"(?:\s*[·×]\s*10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)|[eE]([-+]?\d+))?(?![\w.])")
+PROGRESS_NUMBER = r"([-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?)"
+# Progress-line quantities of the last cycle: (pattern, [summary.json key per group]).
+PROGRESS_KEYS = [
+    (r"Dorfler: \d+ -> (\d+) elements", ["elements"]),
+    (r"(\d+) DOFs \(stress (\d+), displacement (\d+), rotation (\d+)\)",
+     ["dofs.total", "dofs.stress", "dofs.displacement", "dofs.rotation"]),
+    (r"estimate \| (\d+) DOFs, eta = " + PROGRESS_NUMBER, ["dofs.total", "eta.total"]),
+    (r"eta / \|A\^1/2 sigma_h\| = " + PROGRESS_NUMBER, ["eta.relative"]),
+    (r"force \(" + PROGRESS_NUMBER + r", " + PROGRESS_NUMBER + r"\)", [None, "contact.force[1]"]),
+    (r"half-width " + PROGRESS_NUMBER, ["contact.half_width"]),
+    (r"\(from the area " + PROGRESS_NUMBER + r"\)", ["contact.equivalent_half_width"]),
+    (r"max pressure " + PROGRESS_NUMBER, ["contact.max_pressure"]),
+    (r"stick " + PROGRESS_NUMBER + r" \((\d+) stick, (\d+) slip points\)",
+     ["contact.stick_half_width", "contact.points.stick", "contact.points.slip"]),
+    (r"(\d+) Newton steps", ["contact.newton_iterations"]),
+    (r"reaction Top \(" + PROGRESS_NUMBER + r", " + PROGRESS_NUMBER + r"\)", [None, "reactions.Top.force[1]"]),
+    (r"contact area " + PROGRESS_NUMBER + r" \(stick " + PROGRESS_NUMBER + r"\)",
+     ["contact.area", "contact.stick_area"]),
+    (r"cycle summary \| (\d+) DOFs, eta " + PROGRESS_NUMBER, ["dofs.total", "eta.total"]),
+]
+
+
+def key_pointer(key):
+    """`contact.force[1]` -> /cycles/-1/contact/force/1 (the last cycle of summary.json)."""
+    return "/cycles/-1/" + re.sub(r"\[(\d+)\]", r"/\1", key).replace(".", "/")
+
+
+def number_value(text, exponent=None):
+    """(value, tolerance: half a unit of the last digit written) of a quoted number."""
+    digits = text.replace(",", "").replace("−", "-")
+    scale = 10.0 ** int(exponent.translate(SUPERSCRIPT)) if exponent else 1.0
+    return float(digits) * scale, precision_tolerance(digits, scale)
+
+
+def printed_value(text):
+    """(value, tolerance) of a number as the program prints it: 0.00377901, 4.96757e-07."""
+    mantissa, _, exponent = text.lower().partition("e")
+    scale = 10.0 ** int(exponent) if exponent else 1.0
+    return float(mantissa) * scale, precision_tolerance(mantissa, scale)
+
+
+def stored_main_values(root):
+    """{pointer: value} of the eq:/near: checks of the main job's stored run (deck as shipped)."""
+    values = {}
+    for test, _line, checks in stored_runs(root).get("hertz2d.xml", []):
+        if test != MAIN_TEST:
+            continue
+        for key, value in checks.items():
+            kind, _, pointer = key.partition(":")
+            if kind in ("eq", "near"):
+                try:
+                    values[pointer] = float(value.split(":")[0])
+                except ValueError:
+                    pass
+    return values
+
+
+def compare_quoted(path, line, key, value, tol, stored, findings, where):
+    pointer = key_pointer(key)
+    if pointer not in stored:
+        findings.add(path, line, f"{where} quotes {key} = {value:.6g} for the main job, but {MAIN_TEST} "
+                                 f"stores no value for {pointer} (tests/CMakeLists.txt): no test "
+                                 f"asserts it")
+    elif abs(value - stored[pointer]) > tol * (1 + 1e-9) + 1e-300:
+        findings.add(path, line, f"{where} quotes {key} = {value:.6g} for the main job, but {MAIN_TEST} "
+                                 f"stores {stored[pointer]:.10g}")
+
+
+def check_main_numbers(root, findings):
+    path = os.path.join(root, "README.md")
+    if not os.path.exists(path):
+        return
+    stored = stored_main_values(root)
+    deck = os.path.join(root, "input", "hertz2d.xml")
+    cycles = deck_cycles(deck) if os.path.exists(deck) else None
+    text = open(path, encoding="utf-8").read()
+    quoted = 0
+    for offset, unit, in_code, heading in sentences(text):
+        if "main job" not in heading.lower():
+            continue
+        line = line_of(text, offset)
+        if in_code:
+            m = PROGRESS.search(unit)
+            if not m or int(m.group(1)) != int(m.group(2)) or (cycles is not None and int(m.group(1)) != cycles):
+                continue
+            for pattern, keys in PROGRESS_KEYS:
+                for pm in re.finditer(pattern, unit):
+                    for group, key in enumerate(keys, 1):
+                        if key is None:
+                            continue
+                        value, tol = printed_value(pm.group(group))
+                        compare_quoted(path, line, key, value, tol, stored, findings, "the progress line")
+                        quoted += 1
+            if "eta = " in unit and "(" in unit:
+                parts = re.search(r"eta = [^ ]+ \((.*?)\)", unit)
+                for name, number in re.findall(r"(\w+) " + PROGRESS_NUMBER, parts.group(1) if parts else ""):
+                    value, tol = printed_value(number)
+                    total = stored.get(key_pointer("eta.total"))
+                    if total and value < 1e-10 * total:
+                        continue  # a part at round-off (oscillation of zero data, tension)
+                    compare_quoted(path, line, "eta." + name, value, tol, stored, findings, "the progress line")
+                    quoted += 1
+            continue
+        if not unit.startswith("|"):
+            continue
+        cells = [c.strip() for c in unit.strip().strip("|").split("|")]
+        if len(cells) < 3:
+            continue
+        keys = re.findall(r"`([A-Za-z_][\w.]*(?:\[\d+\])?)`", cells[1])
+        if not keys:
+            continue
+        remark_free = re.sub(r"\([^()]*\)", "", cells[2])
+        numbers = list(NUMBER.finditer(remark_free))
+        if len(numbers) != len(keys):
+            findings.add(path, line, f"the main job's table row '{cells[0]}' names {len(keys)} key(s) "
+                                     f"but gives {len(numbers)} number(s) outside parentheses")
+            continue
+        for key, m in zip(keys, numbers):
+            if m.group(3):
+                value, tol = printed_value(m.group(1).replace(",", "") + "e" + m.group(3))
+            else:
+                value, tol = number_value(m.group(1), m.group(2))
+            if m.group(0).startswith(("-", "−")):
+                value = -value
+            compare_quoted(path, line, key, value, tol, stored, findings, "the table")
+            quoted += 1
+    if quoted == 0:
+        findings.add(path, 1, "no number of the main job found under a heading about the main job "
+                              "(the table with summary.json keys, the progress lines of the last cycle)")
+
+
 # --- issue numbers -------------------------------------------------------------------------------
 
 def check_issue_numbers(root, findings):
@@ -301,14 +450,16 @@ def check_issue_numbers(root, findings):
                 findings.add(path, line_of(text, m.start()), f'cites an issue number: "{m.group(0)}"')
 
 
-CHECKS = {"decks": check_decks, "main-job": check_main_job, "issue-numbers": check_issue_numbers}
+CHECKS = {"decks": check_decks, "main-job": check_main_job, "main-numbers": check_main_numbers,
+          "issue-numbers": check_issue_numbers}
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--root", required=True, help="the repository (or fixture) to check")
-    parser.add_argument("--check", default="decks,main-job",
-                        help="comma-separated: " + ", ".join(CHECKS) + " (default: decks,main-job)")
+    parser.add_argument("--check", default="decks,main-job,main-numbers",
+                        help="comma-separated: " + ", ".join(CHECKS) +
+                             " (default: decks,main-job,main-numbers)")
     parser.add_argument("--show", type=int, default=10, help="findings to print (default 10)")
     args = parser.parse_args()
     root = os.path.abspath(args.root)
