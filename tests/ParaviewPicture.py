@@ -1,0 +1,136 @@
+"""scripts/paraview-picture.py on a short run (docs/output.md "A picture with ParaView").
+
+    python3 ParaviewPicture.py --app stresscontact --script scripts/paraview-picture.py
+                               --deck DECK --out DIR [--pvpython PATH] [--set KEY=VALUE ...]
+
+Runs the deck with the --set overrides into DIR (emptied first, so no earlier picture can pass),
+then the ParaView script with pvpython (under xvfb-run when there is no X display: Debian's
+ParaView renders through GLX), and checks the picture: a PNG file of the requested size, whose
+pixels are not one flat colour and hold more than 50 colours (the colour map of the body and the
+status colours of the contact points; a blank or background-only view has a handful), and the
+script's exit status 0. Standard library only (the PNG is decoded here with zlib).
+Exit status 77 (skipped) when pvpython is not installed (Debian: paraview python3-paraview) or
+there is no X display and no xvfb-run (Debian: xvfb xauth); 1 on a failed check.
+"""
+
+import argparse
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import zlib
+
+WIDTH, HEIGHT = 1000, 450
+
+
+def png_pixels(path):
+    """(width, height, rows of bytes per pixel) of an 8-bit RGB or RGBA PNG, or an error text."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        return "not a PNG file"
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", chunk)
+        elif kind == b"IDAT":
+            idat += chunk
+        pos += 12 + length
+    if header is None:
+        return "no IHDR chunk"
+    width, height, depth, colour, _, _, interlace = header
+    if depth != 8 or colour not in (2, 6) or interlace:
+        return f"unexpected PNG format (depth {depth}, colour type {colour}, interlace {interlace})"
+    bpp = 3 if colour == 2 else 4
+    raw = zlib.decompress(idat)
+    stride = width * bpp
+    rows, prev = [], bytearray(stride)
+    for y in range(height):
+        ftype = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b = prev[i]
+            c = prev[i - bpp] if i >= bpp else 0
+            if ftype == 1:
+                line[i] = (line[i] + a) & 255
+            elif ftype == 2:
+                line[i] = (line[i] + b) & 255
+            elif ftype == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif ftype == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        prev = line
+    return width, height, bpp, rows
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--app", required=True)
+    parser.add_argument("--script", required=True)
+    parser.add_argument("--deck", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--pvpython", default="")
+    parser.add_argument("--set", action="append", default=[], dest="sets")
+    args = parser.parse_args()
+    pvpython = args.pvpython if args.pvpython and os.path.exists(args.pvpython) else shutil.which("pvpython")
+    if not pvpython:
+        print("skipped: pvpython is not installed (Debian: apt-get install paraview python3-paraview)")
+        return 77
+    prefix = []
+    if not os.environ.get("DISPLAY"):
+        xvfb = shutil.which("xvfb-run")
+        if not xvfb:
+            print("skipped: no X display and no xvfb-run for ParaView's rendering "
+                  "(Debian: apt-get install xvfb xauth)")
+            return 77
+        prefix = [xvfb, "-a"]
+
+    shutil.rmtree(args.out, ignore_errors=True)
+    run = [args.app, args.deck, "--quiet", "--output", args.out]
+    for s in args.sets:
+        run += ["--set", s]
+    if subprocess.run(run).returncode != 0:
+        print("FAILED: the run failed:", " ".join(run))
+        return 1
+    png = os.path.join(args.out, "picture.png")
+    cmd = prefix + [pvpython, "--force-offscreen-rendering", args.script, args.out, "--output", png,
+                    "--size", str(WIDTH), str(HEIGHT)]
+    picture = subprocess.run(cmd, capture_output=True, text=True)
+    # ParaView's start-up chatter and crash traces can be long: the last lines say what happened
+    print("\n".join((picture.stdout + picture.stderr).splitlines()[-15:]))
+    failures = []
+    if picture.returncode != 0:
+        failures.append(f"paraview-picture.py exited with {picture.returncode}")
+    if not os.path.isfile(png) or os.path.getsize(png) == 0:
+        failures.append(f"{png} is missing or empty")
+    else:
+        decoded = png_pixels(png)
+        if isinstance(decoded, str):
+            failures.append(f"{png}: {decoded}")
+        else:
+            width, height, bpp, rows = decoded
+            if (width, height) != (WIDTH, HEIGHT):
+                failures.append(f"{png} is {width} x {height} pixels, not {WIDTH} x {HEIGHT}")
+            colours = set()
+            for row in rows:
+                colours.update(row[i:i + 3] for i in range(0, len(row), bpp))
+            print(f"{png}: {width} x {height} pixels, {len(colours)} colours, {os.path.getsize(png)} bytes")
+            if len(colours) <= 1:
+                failures.append("the picture is one flat colour")
+            elif len(colours) <= 50:
+                failures.append(f"the picture has only {len(colours)} colours (a blank view?)")
+    for failure in failures:
+        print("FAILED:", failure)
+    print(f"{os.path.basename(args.deck)}: {'FAILED' if failures else 'ok'}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
