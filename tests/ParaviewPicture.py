@@ -4,13 +4,15 @@
                                --deck DECK --out DIR [--pvpython PATH] [--set KEY=VALUE ...]
 
 Runs the deck with the --set overrides into DIR (emptied first, so no earlier picture can pass),
-then the ParaView script with pvpython (under xvfb-run when there is no X display: Debian's
-ParaView renders through GLX), and checks the picture: a PNG file of the requested size, whose
+then the ParaView script with pvpython, and checks the picture: a PNG file of the requested size, whose
 pixels are not one flat colour and hold more than 50 colours (the colour map of the body and the
 status colours of the contact points; a blank or background-only view has a handful), and the
 script's exit status 0. Standard library only (the PNG is decoded here with zlib).
+Debian's ParaView renders through GLX: without an X display this starts its own Xvfb, which
+picks a free display number itself (-displayfd; two `xvfb-run -a` started at once can race for
+the same number), and stops it afterwards.
 Exit status 77 (skipped) when pvpython is not installed (Debian: paraview python3-paraview) or
-there is no X display and no xvfb-run (Debian: xvfb xauth); 1 on a failed check.
+there is no X display and no Xvfb (Debian: xvfb); 1 on a failed check.
 """
 
 import argparse
@@ -83,14 +85,46 @@ def main():
     if not pvpython:
         print("skipped: pvpython is not installed (Debian: apt-get install paraview python3-paraview)")
         return 77
-    prefix = []
-    if not os.environ.get("DISPLAY"):
-        xvfb = shutil.which("xvfb-run")
-        if not xvfb:
-            print("skipped: no X display and no xvfb-run for ParaView's rendering "
-                  "(Debian: apt-get install xvfb xauth)")
+    env = dict(os.environ)
+    xvfb = None
+    if not env.get("DISPLAY"):
+        if not shutil.which("Xvfb"):
+            print("skipped: no X display and no Xvfb for ParaView's rendering (Debian: apt-get install xvfb)")
             return 77
-        prefix = [xvfb, "-a"]
+        xvfb, display = start_xvfb()
+        if xvfb is None:
+            print("FAILED: Xvfb did not start")
+            return 1
+        env["DISPLAY"] = display
+    try:
+        return check(args, pvpython, env)
+    finally:
+        if xvfb is not None:
+            xvfb.terminate()
+            xvfb.wait()
+
+
+def start_xvfb():
+    """An Xvfb server on a free display: (process, ":N") or (None, None)."""
+    read_end, write_end = os.pipe()
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1280x1024x24",
+                               "-nolisten", "tcp"], pass_fds=(write_end,), stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    number = b""
+    while not number.endswith(b"\n"):
+        c = os.read(read_end, 1)
+        if not c:
+            break
+        number += c
+    os.close(read_end)
+    if not number.strip().isdigit():
+        server.kill()
+        server.wait()
+        return None, None
+    return server, ":" + number.decode().strip()
+
+
+def check(args, pvpython, env):
 
     shutil.rmtree(args.out, ignore_errors=True)
     run = [args.app, args.deck, "--quiet", "--output", args.out]
@@ -100,9 +134,9 @@ def main():
         print("FAILED: the run failed:", " ".join(run))
         return 1
     png = os.path.join(args.out, "picture.png")
-    cmd = prefix + [pvpython, "--force-offscreen-rendering", args.script, args.out, "--output", png,
-                    "--size", str(WIDTH), str(HEIGHT)]
-    picture = subprocess.run(cmd, capture_output=True, text=True)
+    cmd = [pvpython, "--force-offscreen-rendering", args.script, args.out, "--output", png,
+           "--size", str(WIDTH), str(HEIGHT)]
+    picture = subprocess.run(cmd, capture_output=True, text=True, env=env)
     # ParaView's start-up chatter and crash traces can be long: the last lines say what happened
     print("\n".join((picture.stdout + picture.stderr).splitlines()[-15:]))
     failures = []
