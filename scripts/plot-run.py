@@ -17,6 +17,13 @@ Reads only what the run wrote (docs/output.md): summary.json, contact_cycle<N>.c
                        has Hertz reference values (frictionless Half disc / Half ball runs) and the
                        Coulomb bound μ_F|σ_N| with Coulomb friction.
   mesh_eta.png         (2D, needs h5py) the mesh of that cycle coloured by the error indicator η_T.
+  deformed.png         (2D, needs h5py) the body of that cycle deformed by the reconstructed
+                       displacement u^R, magnified by the scale factor given in the title (largest
+                       |u^R| = 5% of the body's size, or --scale), coloured by von Mises; with
+                       contact a second panel shows the contact zone at true scale.
+
+As a module (importlib, see docs/adaptivity/hertz2d_study.py) it offers the readers and the
+Hertz reference from the run's own parameters (hertz_reference) to the docs' study scripts.
 
 Material, geometry and friction data come from the run's own summary.json (its "parameters"),
 nothing is assumed. Needs matplotlib (Debian: python3-matplotlib); h5py (python3-h5py) only for
@@ -53,6 +60,28 @@ def param(summary, *keys, default=None):
             return default
         node = node[k]
     return node
+
+
+def hertz_reference(summary, load):
+    """Hertz's (a, p0) for the run's load (Johnson 1985, docs/theory.md "Hertz reference values")
+    from the run's own parameters: a Half disc (cylinder, 2D) or Half ball (sphere, 3D) of radius
+    Mesh/Radius pressed on a plane; E* = E/(1 − ν²), in plane stress E* = E. None for other scenes
+    or a load ≤ 0. With friction these are the frictionless values (p0 is then ~8% higher)."""
+    source = param(summary, "Mesh", "Source", default="")
+    dim = param(summary, "Problem", "Dimension", default=2)
+    obstacle = param(summary, "Contact", "Obstacle", default="Plane")
+    E = param(summary, "Material", "Young modulus")
+    nu = param(summary, "Material", "Poisson ratio")
+    R = param(summary, "Mesh", "Radius", default=1.0)
+    if source not in ("Half disc", "Half ball") or obstacle != "Plane" or not E or nu is None or not load or load <= 0:
+        return None
+    plane_stress = dim == 2 and param(summary, "Material", "Plane", default="Strain") == "Stress"
+    estar = E if plane_stress else E / (1.0 - nu * nu)
+    if dim == 2:
+        a = math.sqrt(4.0 * load * R / (math.pi * estar))
+        return a, 2.0 * load / (math.pi * a)
+    a = (3.0 * load * R / (4.0 * estar)) ** (1.0 / 3.0)
+    return a, 3.0 * load / (2.0 * math.pi * a * a)
 
 
 def plot_eta(summary, plt, out):
@@ -121,7 +150,7 @@ def last_contact_csv(directory, cycle):
     return cycle, files.get(cycle)
 
 
-def plot_contact(summary, directory, cycle, plt, out):
+def plot_contact(summary, directory, cycle, plt, out, name="contact_traction.png"):
     cycle, path = last_contact_csv(directory, cycle)
     if path is None:
         print("plot-run: no contact_cycle<N>.csv for that cycle: contact_traction.png skipped")
@@ -182,12 +211,20 @@ def plot_contact(summary, directory, cycle, plt, out):
     hertz = contact.get("hertz") or {}
     a = hertz.get("half_width", hertz.get("radius"))
     p0 = hertz.get("max_pressure")
+    style, label = "-", "Hertz from the run's load"
+    force = contact.get("force")
+    if not (a and p0) and force:
+        # a Hertz scene with friction: the frictionless profile for the same load, as a reference
+        ref = hertz_reference(summary, force[-1])
+        if ref:
+            (a, p0), style = ref, "--"
+            label = "frictionless Hertz for the run's load"
     if a and p0:
         n = 200
         lo = -a if dim == 2 else 0.0
         xs = [lo + (a - lo) * i / n for i in range(n + 1)]
-        ax1.plot(xs, [p0 * math.sqrt(max(0.0, 1 - (v / a) ** 2)) for v in xs], "-", color="black",
-                 lw=1, label=f"Hertz from the run's load (a = {a:.4g}, p₀ = {p0:.4g})")
+        ax1.plot(xs, [p0 * math.sqrt(max(0.0, 1 - (v / a) ** 2)) for v in xs], style, color="black",
+                 lw=1, label=f"{label} (a = {a:.4g}, p₀ = {p0:.4g})")
     law = param(summary, "Contact", "Friction law", default="None")
     mu = param(summary, "Contact", "Friction coefficient", default=0.0) or 0.0
     if law == "Coulomb" and mu > 0:
@@ -199,13 +236,12 @@ def plot_contact(summary, directory, cycle, plt, out):
             ax2.plot([pos[i] for i in order], [-mu * pressure[i] for i in order], "-", color="0.3", lw=0.8)
         else:  # in 3D several points share a distance: the bound of each point
             ax2.plot(pos, [mu * p for p in pressure], "_", color="0.3", ms=5, label=label)
-    force = contact.get("force")
     title = f"contact tractions, cycle {cycle}"
     if force:
         title += f" (force {', '.join(f'{v:.6g}' for v in force)})"
     ax1.set_title(title)
-    ax1.set_ylabel("normal pressure −σ_N")
-    ax2.set_ylabel("tangential traction σ_T" if dim == 2 else "|σ_T|")
+    ax1.set_ylabel("normal pressure −σ_N (unit of E)")
+    ax2.set_ylabel("tangential traction σ_T (unit of E)" if dim == 2 else "|σ_T| (unit of E)")
     ax2.set_xlabel(xlabel)
     for ax in (ax1, ax2):
         ax.grid(True, alpha=0.3)
@@ -215,7 +251,7 @@ def plot_contact(summary, directory, cycle, plt, out):
     if span > 0:  # zoom on the zone (the free points extend over the whole contact boundary)
         ax2.set_xlim((-1.5 * span if dim == 2 else 0.0), 1.5 * span)
     fig.tight_layout()
-    path = os.path.join(out, "contact_traction.png")
+    path = os.path.join(out, name)
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
@@ -295,12 +331,110 @@ def plot_mesh(summary, directory, cycle, plt, out):
     return path
 
 
+def domain_fields(directory, summary, cycle, names):
+    """(step name, xyz, cells, {name: array}) of the domain grid of a cycle (the last one when
+    cycle is None) with the fields asked for that the step has; None when h5py or the step is
+    missing."""
+    try:
+        import h5py
+    except ImportError:
+        return None
+    base = param(summary, "Output", "Base name", default="solution")
+    xdmf = os.path.join(directory, base + ".xdmf")
+    if not os.path.exists(xdmf):
+        return None
+    steps = [g for g in ET.parse(xdmf).getroot().iter("Grid") if g.get("CollectionType") == "Spatial"]
+    step = steps[-1] if steps and cycle is None else next((g for g in steps if g.get("Name") == f"cycle {cycle}"), None)
+    domain = None if step is None else next((g for g in step.findall("Grid") if g.get("Name") == "domain"), None)
+    if domain is None:
+        return None
+
+    def read(node):
+        item = node.find("DataItem") if node is not None else None
+        if item is None or ":" not in (item.text or ""):
+            return None
+        fname, path = item.text.strip().split(":", 1)
+        with h5py.File(os.path.join(directory, fname), "r") as f:
+            return f[path][()]
+
+    fields = {}
+    for a in domain.findall("Attribute"):
+        if a.get("Name") in names:
+            fields[a.get("Name")] = read(a)
+    return step.get("Name"), read(domain.find("Geometry")), read(domain.find("Topology")), fields
+
+
+def plot_deformed(summary, directory, cycle, plt, out, scale=None, name="deformed.png", title=None):
+    """The 2D body deformed by u^R × scale (default: largest |u^R| = 5% of the body's diagonal),
+    coloured by von Mises; with contact points in the cycle a second panel at true scale around
+    the contact zone (u^R × 1, the obstacle plane drawn)."""
+    if param(summary, "Problem", "Dimension", default=2) != 2:
+        return None
+    found = domain_fields(directory, summary, cycle, {"reconstructed_displacement", "von_mises"})
+    if not found or found[1] is None or found[2] is None:
+        print("plot-run: no .xdmf step with a domain grid (or no h5py): " + name + " skipped")
+        return None
+    step, xyz, cells, fields = found
+    u, vm = fields.get("reconstructed_displacement"), fields.get("von_mises")
+    if u is None or vm is None:
+        print(f"plot-run: {step} has no reconstructed_displacement or von_mises: {name} skipped")
+        return None
+    import matplotlib.tri as mtri
+    umax = float(max(math.hypot(p[0], p[1]) for p in u))
+    diag = math.hypot(float(xyz[:, 0].max() - xyz[:, 0].min()), float(xyz[:, 1].max() - xyz[:, 1].min()))
+    if scale is None:
+        scale = 0.05 * diag / umax if umax > 0 else 1.0
+    number = int(step.split()[-1]) if step.split()[-1].isdigit() else cycle
+    points = []
+    if number is not None:
+        _, path = last_contact_csv(directory, number)
+        if path:
+            with open(path, newline="", encoding="utf-8") as f:
+                points = [r for r in csv.DictReader(f) if r.get("status") in ("stick", "slip")]
+    panels = 2 if points else 1
+    fig, axes = plt.subplots(1, panels, figsize=(6.5 * panels, 5.2), squeeze=False)
+    vmax = float(vm.max()) or 1.0
+    for k, ax in enumerate(axes[0]):
+        factor = scale if k == 0 else 1.0
+        tri = mtri.Triangulation(xyz[:, 0] + factor * u[:, 0], xyz[:, 1] + factor * u[:, 1], cells)
+        pc = ax.tripcolor(tri, facecolors=vm, cmap="viridis", vmin=0.0, vmax=vmax, edgecolors="none")
+        ax.triplot(tri, color="black", lw=0.15, alpha=0.5)
+        if k == 0:
+            ax.set_aspect("equal")
+            ax.set_title(f"{step}: deformed by u^R × {scale:.3g} (magnified)", fontsize=10)
+            fig.colorbar(pc, ax=ax, label="von Mises stress (unit of E)", shrink=0.8)
+        else:
+            xs = [float(r["x"]) for r in points]
+            half = max(max(xs) - min(xs), 1e-3 * diag)
+            mid = 0.5 * (max(xs) + min(xs))
+            normal = param(summary, "Contact", "Obstacle normal", default=[0.0, 1.0]) or [0.0, 1.0]
+            opoint = param(summary, "Contact", "Obstacle point", default=[0.0, 0.0]) or [0.0, 0.0]
+            if abs(normal[0]) < 1e-12:  # a horizontal plane: draw it
+                ax.axhline(opoint[1], color="black", lw=1.2, label="obstacle plane")
+                ax.legend(fontsize=8, loc="upper right")
+            ax.set_xlim(mid - 1.2 * half, mid + 1.2 * half)
+            ys = [float(r["y"]) for r in points]
+            ax.set_ylim(min(ys) - 0.1 * half, min(ys) + 0.5 * half)
+            ax.set_title(f"contact zone at true scale (u^R × 1), {len(points)} active points", fontsize=10)
+        ax.set_xlabel("x (length unit of the mesh)")
+        ax.set_ylabel("y")
+    if title:
+        fig.suptitle(title, fontsize=11)
+    fig.tight_layout()
+    path = os.path.join(out, name)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      epilog="Writes OUTPUT_DIR/plots/*.png (docs/output.md \"Plotting a run\").")
     parser.add_argument("output_dir", metavar="OUTPUT_DIR", help="a run's output directory")
     parser.add_argument("--cycle", type=int, default=None,
                         help="cycle of the contact and mesh plots (default: the last one written)")
+    parser.add_argument("--scale", type=float, default=None,
+                        help="magnification of u^R in deformed.png (default: largest |u^R| = 5%% of the body)")
     args = parser.parse_args()
     try:
         import matplotlib
@@ -313,7 +447,8 @@ def main():
     os.makedirs(out, exist_ok=True)
     written = [p for p in (plot_eta(summary, plt, out),
                            plot_contact(summary, args.output_dir, args.cycle, plt, out),
-                           plot_mesh(summary, args.output_dir, args.cycle, plt, out)) if p]
+                           plot_mesh(summary, args.output_dir, args.cycle, plt, out),
+                           plot_deformed(summary, args.output_dir, args.cycle, plt, out, args.scale)) if p]
     for p in written:
         print("wrote", p)
     return 0 if written else 1

@@ -6,7 +6,7 @@
 Runs the deck with the --set overrides into DIR (emptied first, so no earlier PNG can pass), then
 plot-run.py with this interpreter, and checks the PNGs the run must give: eta.png always,
 contact_traction.png with contact (a cycle with contact quantities in summary.json),
-mesh_eta.png in 2D. Each must be a PNG image that is not one flat colour, and plot-run.py must
+mesh_eta.png and deformed.png in 2D. Each must be a PNG image that is not one flat colour, and plot-run.py must
 exit 0 without a warning (matplotlib warns about degenerate axes and log scales without data).
 Exit status 77 (skipped) when this interpreter cannot import matplotlib and h5py (Debian:
 python3-matplotlib, python3-h5py, for /usr/bin/python3), 1 on a failed check.
@@ -57,7 +57,7 @@ def main():
         summary = json.load(f)
     dim = summary["parameters"]["Problem"]["Dimension"]
     contact = any(c.get("contact") for c in summary["cycles"])
-    expected = ["eta.png"] + (["contact_traction.png"] if contact else []) + (["mesh_eta.png"] if dim == 2 else [])
+    expected = ["eta.png"] + (["contact_traction.png"] if contact else []) + (["mesh_eta.png", "deformed.png"] if dim == 2 else [])
     for name in expected:
         path = os.path.join(args.out, "plots", name)
         if not os.path.isfile(path) or os.path.getsize(path) == 0:
