@@ -13,6 +13,11 @@ decks          every input/*.xml: a number of cycles stated in a comment ("16 Do
                tests/CMakeLists.txt stores for a run of the deck as shipped (an sc_run_test with
                that DECK and no SETS), to the precision the comment gives. A test of the deck as
                shipped whose cycle count (size:/cycles) is not Cycles + 1 is reported too.
+               Decks that no test runs as shipped but whose run as shipped is a committed study
+               CSV (STUDY_RUNS: the 3D Hertz decks, run by docs/adaptivity/hertz3d_study.py with
+               only Adaptivity/Cycles raised, so that its row of cycle Cycles is the deck's last
+               cycle) are checked against that row; there a stated range "5-8 Newton steps per
+               cycle" must also hold the CSV's newton_steps of cycles 0 to Cycles.
 main-job       README.md and docs/user-guide.md: a sentence about the main job (it names "main
                job" or hertz2d.xml) that states a number of cycles, and a progress line
                "cycle N/M" in a section about the main job, must agree with the Adaptivity/Cycles
@@ -37,6 +42,7 @@ Only the Python 3 standard library is used.
 """
 
 import argparse
+import csv
 import os
 import re
 import sys
@@ -53,6 +59,12 @@ PROGRESS = re.compile(r"\bcycle\s+(\d+)/(\d+)\b")
 # "to 49021 DOFs", "to about 180k DOFs", "to 49,021 DOFs": the last cycle's DOFs.
 FINAL_DOFS = re.compile(r"\bto\s+(about\s+)?(\d[\d,]*(?:\.\d+)?)\s*(k|M)?\s+DOFs\b")
 ETA = re.compile(r"\beta\s*(?:=\s*)?(\d+(?:\.\d+)?)\s*[eE]\s*([-−]?\d+)")
+NEWTON_RANGE = re.compile(r"\b(\d+)\s*[-–]\s*(\d+)\s+(?:semismooth\s+)?Newton steps per cycle")
+# Decks whose run as shipped (with more cycles) is a committed study CSV: deck -> CSV. The study
+# (docs/adaptivity/hertz3d_study.py, RUNS) changes only Adaptivity/Cycles, and a run's first
+# cycles do not depend on how many follow.
+STUDY_RUNS = {"hertz3d.xml": "docs/adaptivity/hertz3d_coulomb_adaptive.csv",
+              "hertz3d_frictionless.xml": "docs/adaptivity/hertz3d_frictionless_adaptive.csv"}
 ISSUE = re.compile(r"\bissues?\s#\d+", re.I)
 MAIN_JOB = re.compile(r"main job|(?<![\w_])hertz2d\.xml", re.I)
 
@@ -143,8 +155,24 @@ def check_decks(root, findings):
                 final_dofs = (int(checks["eq:/cycles/-1/dofs/total"]), test)
             if "near:/cycles/-1/eta/total" in checks:
                 final_eta = (float(checks["near:/cycles/-1/eta/total"].split(":")[0]), test)
+        newton = None
+        study = os.path.join(root, STUDY_RUNS[name]) if name in STUDY_RUNS else None
+        if final_dofs is None and study and os.path.exists(study):
+            with open(study, newline="", encoding="utf-8") as f:
+                rows = [r for r in csv.DictReader(f) if int(r["cycle"]) <= cycles]
+            if rows and int(rows[-1]["cycle"]) == cycles:
+                source = os.path.relpath(study, root)
+                final_dofs = (int(rows[-1]["dofs"]), source)
+                final_eta = (float(rows[-1]["eta"]), source)
+                steps = [int(r["newton_steps"]) for r in rows]
+                newton = (min(steps), max(steps), source)
         for cm in re.finditer(r"<!--(.*?)-->", text, re.S):
             comment, base = cm.group(1), cm.start(1)
+            for m in NEWTON_RANGE.finditer(comment):
+                if newton and (int(m.group(1)), int(m.group(2))) != newton[:2]:
+                    findings.add(path, line_of(text, base + m.start()),
+                                 f'comment says "{m.group(0)}" but {newton[2]} (the deck as shipped) '
+                                 f"takes {newton[0]}-{newton[1]} in cycles 0 to {cycles}")
             settings = {int(s) for s in SETTING.findall(comment)}
             for m in CYCLES.finditer(comment):
                 n = int(m.group(1))
@@ -161,7 +189,7 @@ def check_decks(root, findings):
                 tol = max(precision_tolerance(number, scale), 0.1 * value if about else 0.0)
                 if abs(value - final_dofs[0]) > tol:
                     findings.add(path, line_of(text, base + m.start()),
-                                 f'comment says "{m.group(0)}" but {final_dofs[1]} stores '
+                                 f'comment says "{m.group(0)}" but {final_dofs[1]} has '
                                  f"{final_dofs[0]} DOFs in the last cycle (Adaptivity/Cycles = {cycles})")
             for m in ETA.finditer(comment):
                 if final_eta is None:
@@ -171,7 +199,7 @@ def check_decks(root, findings):
                 tol = precision_tolerance(mantissa, 10.0 ** exponent)
                 if abs(value - final_eta[0]) > tol * (1 + 1e-9):
                     findings.add(path, line_of(text, base + m.start()),
-                                 f'comment says "{m.group(0)}" but {final_eta[1]} stores eta = '
+                                 f'comment says "{m.group(0)}" but {final_eta[1]} has eta = '
                                  f"{final_eta[0]:.4g} in the last cycle")
 
 
