@@ -16,7 +16,9 @@ A run without contact draws the left view only. The grids are taken by position 
 boundary second, contact third; docs/output.md "Opening in ParaView"), not by name.
 
 Needs ParaView's Python (Debian: apt-get install paraview python3-paraview, about 440 MB; not
-needed to build or run StressContact). Exit status 0 when the picture is written, 1 otherwise.
+needed to build or run StressContact). Debian's ParaView draws through GLX: on a machine without
+a display run it as `xvfb-run -a pvpython --force-offscreen-rendering ...` (Debian: xvfb xauth).
+Exit status 0 when the picture is written, 1 otherwise.
 """
 
 import argparse
