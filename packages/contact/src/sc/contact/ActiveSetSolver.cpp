@@ -625,14 +625,91 @@ int ActiveSetSolver::updateState(bool flipToStick)
   return global;
 }
 
-Teuchos::RCP<ActiveSetSolver::CrsMatrix>
-ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b,
-                                const Teuchos::RCP<CrsMatrix>& reuse) const
+std::array<ActiveSetSolver::ConstraintRow, 3>
+ActiveSetSolver::constraintRows(const ContactPoint& p) const
 {
   const int d = space_.dim();
   const bool friction = settings_.needsFriction();
   const bool tresca = settings_.frictionLaw == FrictionLaw::Tresca || fixedPoint_;
   const double mu = settings_.frictionCoefficient;
+  std::array<ConstraintRow, 3> rows;
+  // Frame vectors per equation: row 0 normal, rows 1.. tangential.
+  const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
+  // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (docs/theory.md §"Contact and friction"), with
+  // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
+  // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
+  //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
+  // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
+  // been evaluated in contact yet).
+  const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
+  double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
+  bool hswRow = false;
+  const auto r0 = p.previousRT();  // r_T^{n−1} of load steps (zero in the first step)
+  if (hsw) {
+    const double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]), p.sigmaT[1] - p.c * (p.rT[1] - r0[1])};
+    const double zn = std::hypot(z[0], z[1]);
+    const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
+    if (zn > 0.0 && bound > 0.0) {
+      hswRow = true;
+      const double tn = std::hypot(p.sigmaT[0], p.sigmaT[1]);
+      const double shrink = tn > bound ? bound / tn : 1.0;
+      const double st[2] = {shrink * p.sigmaT[0], shrink * p.sigmaT[1]};
+      for (int j = 0; j < 2; ++j) {
+        for (int l = 0; l < 2; ++l)
+          hswM[j][l] = (st[j] * p.direction[l] - (j == l ? bound : 0.0)) / zn;
+        hswRhs[j] = st[j] - bound * p.direction[j] - mu * p.c * p.direction[j] * p.gap;
+      }
+      // z depends on r_T through r_T − r_T^{n−1}: −c M (r_T − r_T^{n−1}) on the left.
+      for (int j = 0; j < 2; ++j)
+        hswRhs[j] -= p.c * (hswM[j][0] * r0[0] + hswM[j][1] * r0[1]);
+    }
+  }
+  for (int r = 0; r < d; ++r) {
+    const auto& dir = *frame[r];
+    std::array<double, 3> alpha{0, 0, 0}, beta{0, 0, 0};
+    double gamma = 0.0;
+    if (r == 0) {
+      if (p.status == PointStatus::Free) {
+        beta = dir;  // σ_N = 0
+      } else {
+        alpha = dir;  // r_N = G
+        gamma = p.gap;
+      }
+    } else {
+      const int k = r - 1;
+      if (hswRow) {
+        // Row j of the HSW system: traction part and dual part (r = ρ in the frame).
+        for (int i = 0; i < d; ++i) {
+          beta[i] = (1.0 + hswM[k][k]) * (k == 0 ? p.t1[i] : p.t2[i]) +
+                    hswM[k][1 - k] * (k == 0 ? p.t2[i] : p.t1[i]) + mu * p.direction[k] * p.n[i];
+          alpha[i] = -p.c * (hswM[k][0] * p.t1[i] + hswM[k][1] * p.t2[i] + mu * p.direction[k] * p.n[i]);
+        }
+        gamma = hswRhs[k];
+      } else if (p.status == PointStatus::Stick) {
+        alpha = dir;  // r_T = r_T^{n−1}: no slip increment (0 in the first load step)
+        gamma = r0[k];
+      } else if (p.status == PointStatus::Slip && friction) {
+        if (tresca) {
+          beta = dir;  // σ_T,k = s ξ_k
+          gamma = trescaBound(p) * p.direction[k];
+        } else {
+          for (int i = 0; i < d; ++i)
+            beta[i] = dir[i] + mu * p.direction[k] * p.n[i];  // σ_T,k + μ ξ_k σ_N = 0
+        }
+      } else {
+        beta = dir;  // σ_T = 0 (free or frictionless)
+      }
+    }
+    rows[r] = {alpha, beta, gamma};
+  }
+  return rows;
+}
+
+Teuchos::RCP<ActiveSetSolver::CrsMatrix>
+ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b,
+                                const Teuchos::RCP<CrsMatrix>& reuse) const
+{
+  const int d = space_.dim();
   auto A = solvers::copyMatrixValues(K, reuse);
   A->resumeFill();
   rhs.assign(b);
@@ -680,73 +757,9 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
     };
     for (int pp = 0; pp < m; ++pp) {
       const ContactPoint& p = points_[first[blk] + pp];
-      // Frame vectors per equation: row 0 normal, rows 1.. tangential.
-      const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
-      // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (docs/theory.md §"Contact and friction"), with
-      // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
-      // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
-      //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
-      // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
-      // been evaluated in contact yet).
-      const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
-      double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
-      bool hswRow = false;
-      const auto r0 = p.previousRT();  // r_T^{n−1} of load steps (zero in the first step)
-      if (hsw) {
-        const double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]), p.sigmaT[1] - p.c * (p.rT[1] - r0[1])};
-        const double zn = std::hypot(z[0], z[1]);
-        const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
-        if (zn > 0.0 && bound > 0.0) {
-          hswRow = true;
-          const double tn = std::hypot(p.sigmaT[0], p.sigmaT[1]);
-          const double shrink = tn > bound ? bound / tn : 1.0;
-          const double st[2] = {shrink * p.sigmaT[0], shrink * p.sigmaT[1]};
-          for (int j = 0; j < 2; ++j) {
-            for (int l = 0; l < 2; ++l)
-              hswM[j][l] = (st[j] * p.direction[l] - (j == l ? bound : 0.0)) / zn;
-            hswRhs[j] = st[j] - bound * p.direction[j] - mu * p.c * p.direction[j] * p.gap;
-          }
-          // z depends on r_T through r_T − r_T^{n−1}: −c M (r_T − r_T^{n−1}) on the left.
-          for (int j = 0; j < 2; ++j)
-            hswRhs[j] -= p.c * (hswM[j][0] * r0[0] + hswM[j][1] * r0[1]);
-        }
-      }
+      const auto rows = constraintRows(p);
       for (int r = 0; r < d; ++r) {
-        const auto& dir = *frame[r];
-        std::array<double, 3> alpha{0, 0, 0}, beta{0, 0, 0};
-        double gamma = 0.0;
-        if (r == 0) {
-          if (p.status == PointStatus::Free) {
-            beta = dir;  // σ_N = 0
-          } else {
-            alpha = dir;  // r_N = G
-            gamma = p.gap;
-          }
-        } else {
-          const int k = r - 1;
-          if (hswRow) {
-            // Row j of the HSW system: traction part and dual part (r = ρ in the frame).
-            for (int i = 0; i < d; ++i) {
-              beta[i] = (1.0 + hswM[k][k]) * (k == 0 ? p.t1[i] : p.t2[i]) +
-                        hswM[k][1 - k] * (k == 0 ? p.t2[i] : p.t1[i]) + mu * p.direction[k] * p.n[i];
-              alpha[i] = -p.c * (hswM[k][0] * p.t1[i] + hswM[k][1] * p.t2[i] + mu * p.direction[k] * p.n[i]);
-            }
-            gamma = hswRhs[k];
-          } else if (p.status == PointStatus::Stick) {
-            alpha = dir;  // r_T = r_T^{n−1}: no slip increment (0 in the first load step)
-            gamma = r0[k];
-          } else if (p.status == PointStatus::Slip && friction) {
-            if (tresca) {
-              beta = dir;  // σ_T,k = s ξ_k
-              gamma = trescaBound(p) * p.direction[k];
-            } else {
-              for (int i = 0; i < d; ++i)
-                beta[i] = dir[i] + mu * p.direction[k] * p.n[i];  // σ_T,k + μ ξ_k σ_N = 0
-            }
-          } else {
-            beta = dir;  // σ_T = 0 (free or frictionless)
-          }
-        }
+        const auto& [alpha, beta, gamma] = rows[r];
         const bool traction = beta[0] != 0.0 || beta[1] != 0.0 || beta[2] != 0.0;
         std::vector<double> newVals(pattern.size(), 0.0);
         double newRhs = gamma;
@@ -880,6 +893,35 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
                   << " outer steps ('Contact/Newton/Maximum fixed-point iterations').");
 }
 
+namespace {
+// Sets BlockStructure::stressBasis of a solver for one contact solve and restores the previous
+// block structure when the solve ends (or throws).
+class StressBasisScope {
+public:
+  explicit StressBasisScope(solvers::LinearSolver& solver)
+    : solver_(solver), saved_(solver.blockStructure())
+  {
+  }
+  ~StressBasisScope()
+  {
+    if (set_)
+      solver_.setBlockStructure(saved_);
+  }
+  void set(const Teuchos::RCP<const Tpetra::CrsMatrix<>>& basis)
+  {
+    auto blocks = saved_;
+    blocks.stressBasis = basis;
+    solver_.setBlockStructure(blocks);
+    set_ = true;
+  }
+
+private:
+  solvers::LinearSolver& solver_;
+  solvers::BlockStructure saved_;
+  bool set_ = false;
+};
+}  // namespace
+
 void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
                                      solvers::LinearSolver& solver, MultiVector& x)
 {
@@ -903,16 +945,33 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
   // A direct solver is done with the previous step's matrix once it has factorised it: its
   // values are overwritten in the next step. A Krylov solver's preconditioner may keep it.
   Teuchos::RCP<CrsMatrix> A;
+  // A Krylov solver gets the systems in the constraints' coordinates y = T x (ContactElimination.cpp):
+  // free points' rows and columns eliminated, symmetric unless slip rows mix coordinates; its
+  // block preconditioner learns the basis of the σ unknowns (BlockStructure::stressBasis).
+  Elimination elimination;
+  StressBasisScope basisScope(solver);
+  if (solver.isIterative()) {
+    elimination = eliminationBasis(K, b);
+    basisScope.set(elimination.T);
+  }
   for (int it = 1; it <= maxIterations_; ++it) {
     const auto stepStart = std::chrono::steady_clock::now();
     if (holdsBody_)
       checkSomePointInContact(it - 1);
-    A = modifiedMatrix(K, rhs, b, solver.isIterative() ? Teuchos::null : A);
-    // Contact rows make the system non-symmetric. Same graph every step: a direct solver keeps
-    // its symbolic analysis and refactorises; x (the previous iterate) is a Krylov solver's
-    // initial guess.
-    solver.setOperator(A, false);
-    solver.solve(rhs, x);
+    if (solver.isIterative()) {
+      const bool symmetric = eliminatedMatrix(elimination, A, rhs);
+      MultiVector y(x.getMap(), 1);
+      elimination.T->apply(x, y);  // the previous iterate is the initial guess
+      solver.setOperator(A, symmetric);
+      solver.solve(rhs, y);
+      elimination.Q->apply(y, x);
+    } else {
+      A = modifiedMatrix(K, rhs, b, A);
+      // Contact rows make the system non-symmetric. Same graph every step: the direct solver
+      // keeps its symbolic analysis and refactorises.
+      solver.setOperator(A, false);
+      solver.solve(rhs, x);
+    }
     if (solver.isIterative())
       stats_.linearIterationsPerStep.push_back(solver.lastSolveStats().iterations);
     stats_.newtonIterations = it;

@@ -104,8 +104,10 @@ public:
   /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact
   /// terms; x: initial guess in, solution out (each Newton step starts the linear solver from the
   /// previous iterate). Throws ConvergenceError if the state does not settle within the limits
-  /// (statistics() then says converged = false). The solver gets each step's modified matrix
-  /// (non-symmetric) unscaled: scaling and preconditioning are the solver's (LinearSolver).
+  /// (statistics() then says converged = false). A direct solver gets each step's modified
+  /// matrix (non-symmetric); a Krylov solver the same equations in the constraints' coordinates
+  /// (eliminatedMatrix: symmetric without slip rows) and their basis (BlockStructure::stressBasis).
+  /// Both unscaled: scaling and preconditioning are the solver's (LinearSolver).
   void solve(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
              MultiVector& x);
 
@@ -146,6 +148,27 @@ private:
   /// copy of K).
   Teuchos::RCP<CrsMatrix> modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const MultiVector& b,
                                          const Teuchos::RCP<CrsMatrix>& reuse) const;
+  /// Row r (0: normal, 1..: tangential) of point p in the current state:
+  /// Σ_i α_i ρ_i + Σ_i β_i τ_i = γ (ρ: the point's dual quantities, τ: its traction coefficients,
+  /// global components; see the file comment).
+  struct ConstraintRow {
+    std::array<double, 3> alpha{0, 0, 0}, beta{0, 0, 0};
+    double gamma = 0.0;
+  };
+  std::array<ConstraintRow, 3> constraintRows(const ContactPoint& p) const;
+
+  /// The contact Newton systems of a Krylov solver in the points' frame coordinates
+  /// (ContactElimination.cpp, docs/solvers.md "Contact with the stress multigrid").
+  struct Elimination {
+    Teuchos::RCP<CrsMatrix> Q, T, G;  ///< x = Q y, y = T x, G = Qᵀ K Q
+    Teuchos::RCP<MultiVector> Qb;     ///< Qᵀ b
+  };
+  /// Q, T = Q⁻¹, Qᵀ K Q and Qᵀ b for this K and b (once per solve: they do not depend on the state).
+  Elimination eliminationBasis(const CrsMatrix& K, const MultiVector& b) const;
+  /// The system of the current state in frame coordinates y (x = Q y): traction rows that fix
+  /// one coordinate are eliminated with their column, dual rows are Galerkin rows of Qᵀ K Q.
+  /// Returns whether it is symmetric (no mixed rows, e.g. Coulomb slip, on any rank).
+  bool eliminatedMatrix(const Elimination& e, Teuchos::RCP<CrsMatrix>& A, MultiVector& rhs) const;
 
   /// The RT face DOFs of one contact face and the map between their point values and the
   /// face's constraint coefficients: traction t(x_q) = Σ_p V(q,p) τ_p, dual ρ_p = Σ_q V(q,p) r_q.

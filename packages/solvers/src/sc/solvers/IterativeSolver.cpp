@@ -249,8 +249,12 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
         coupled = v(k) != 0.0;
       constraintRows[i] = coupled ? 0 : 1;
     }
-    prec.stressMultigrid =
-        buildStressMultigrid(blocks, m.stressOfOperator, constraintRows, symmetric, options_, dl);
+    Teuchos::RCP<const CrsMatrix> basis;
+    if (!blocks.stressBasis.is_null())
+      basis = extractBlock(*blocks.stressBasis, prec.stressMap, blocks.begin(0), blocks.end(0),
+                           prec.stressMap);
+    prec.stressMultigrid = buildStressMultigrid(blocks, m.stressOfOperator, constraintRows,
+                                                symmetric, options_, dl, basis);
   } else {
     Teuchos::ParameterList ml;
     ml.set("verbosity", "none");

@@ -61,6 +61,10 @@ struct BlockStructure {
   /// Nested hierarchy, coarsest level first, the last level being the operator's mesh: needed by
   /// `Stress block` = Multigrid (StressHierarchy.hpp: stressProlongation, stressPatches).
   std::vector<MultigridLevel> multigrid;
+  /// The operator's unknowns y in terms of the space's DOFs x, y = T x (null: y = x). A contact
+  /// solve works in its constraints' coordinates on the contact faces (contact::ActiveSetSolver);
+  /// the multigrid's finest prolongation becomes T P. T is the identity off the σ block.
+  Teuchos::RCP<const CrsMatrix> stressBasis;
 
   bool isSet() const { return stressDofs + displacementDofs + rotationDofs > 0; }
   long long begin(int field) const

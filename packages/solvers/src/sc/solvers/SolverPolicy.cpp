@@ -15,21 +15,14 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
   // the nested meshes (the levels are chosen per cycle).
   hierarchy_ = (iterative && il.get<std::string>("Stress block") == "Multigrid") ||
                (isAuto() && scene.dimension == 3 && !contact);
-  // The Krylov solver with contact rows is verified (against MUMPS, run_hertz2d_iterative) in
-  // 2D at degree 1 only; other contact scenes are rejected until a test covers them.
+  // The Krylov solver with contact rows is verified (against MUMPS: run_hertz2d_iterative, and
+  // with Stress block = Multigrid run_hertz2d_multigrid_*) in 2D at degree 1 only; other contact
+  // scenes are rejected until a test covers them.
   SC_THROW_IF(iterative && contact && (scene.dimension != 2 || scene.degree != 1),
               core::InputError,
               "Linear Solver/Type = Iterative with contact is verified only in 2D at "
               "'Discretization/Degree' = 1 (docs/solvers.md); this scene is "
                   << scene.dimension << "D at degree " << scene.degree << ": use MUMPS or KLU2");
-  // The stress multigrid with contact rows (non-symmetric S_σ, LU patches) did not converge on
-  // the Hertz 2D scenes (Coulomb: GMRES residual 0.17 after 1000 iterations in cycle 11, the
-  // first with two levels; frictionless 6e-7; docs/solvers.md): rejected until it works and a
-  // test covers it.
-  SC_THROW_IF(iterative && contact && hierarchy_, core::InputError,
-              "Linear Solver/Iterative/Stress block = Multigrid is not available with contact "
-              "(its GMRES did not converge on the Hertz scene, docs/solvers.md); use a Stress "
-              "block of MUMPS or KLU2 (exact), or Linear Solver/Type = MUMPS");
   // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md
   // §"Contact and friction"), and Symmetric = false declines to exploit symmetry.
   SC_THROW_IF(iterative && il.get<std::string>("Method") == "MINRES" &&

@@ -20,13 +20,16 @@ namespace sc::solvers {
 /// `blocks`, as an operator Y = V(X). `constraintRows[i]` (local rows of S): a row without
 /// displacement coupling (traction data, a replaced contact row), which takes no coarse
 /// correction. The smoother's degree and ratio come from `options`; the coarsest level is solved
-/// by the direct solver of the validated list `directList` (its `Type`). Throws InputError when
-/// `blocks` has no hierarchy.
+/// by the direct solver of the validated list `directList` (its `Type`). `stressBasis`: the σ
+/// block of BlockStructure::stressBasis on S's maps (S's unknowns are stressBasis × the σ DOFs;
+/// the finest prolongation becomes stressBasis P), or null. Throws InputError when `blocks` has
+/// no hierarchy.
 Teuchos::RCP<Tpetra::Operator<>> buildStressMultigrid(const BlockStructure& blocks,
                                                        const Teuchos::RCP<CrsMatrix>& S,
                                                        const std::vector<char>& constraintRows,
                                                        bool symmetric,
                                                        const IterativeOptions& options,
-                                                       const Teuchos::ParameterList& directList);
+                                                       const Teuchos::ParameterList& directList,
+                                                       const Teuchos::RCP<const CrsMatrix>& stressBasis);
 
 }  // namespace sc::solvers
