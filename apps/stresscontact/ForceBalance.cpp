@@ -33,6 +33,7 @@ CycleForces computeCycleForces(const assembly::MixedElasticityAssembler& assembl
   const auto body = assembly::computeBodyForceResultant(assembler, data, comm);
   CycleForces out;
   std::array<double, 3> supports{0, 0, 0}, loads{0, 0, 0}, contact{0, 0, 0};
+  double largestPart = 0.0;  // supports may cancel each other (rollers at both ends of a bar)
   if (contactForce)
     contact = *contactForce;
   for (const auto& p : parts) {
@@ -40,9 +41,11 @@ CycleForces computeCycleForces(const assembly::MixedElasticityAssembler& assembl
     const auto type = bc ? bc->type : core::BoundaryType::Free;
     if (type == core::BoundaryType::Contact)
       continue;  // the contact force is the summary's (Σ_p ∫_F w_p τ_p, the same integral)
-    const bool support = type == core::BoundaryType::Displacement || type == core::BoundaryType::Symmetry;
+    const bool support = type == core::BoundaryType::Displacement || type == core::BoundaryType::Symmetry ||
+                         type == core::BoundaryType::NormalDisplacement;
     for (int i = 0; i < 3; ++i)
       (support ? supports : loads)[i] += p.force[i];
+    largestPart = std::max(largestPart, norm(p.force));
     if (!support)
       continue;
     nlohmann::ordered_json r = {{"type", core::toString(type)}, {"force", firstComponents(p.force, d)}};
@@ -55,7 +58,7 @@ CycleForces computeCycleForces(const assembly::MixedElasticityAssembler& assembl
   std::array<double, 3> sum{0, 0, 0};
   for (int i = 0; i < 3; ++i)
     sum[i] = supports[i] + loads[i] + contact[i] + body[i];
-  const double scale = std::max({norm(supports), norm(loads), norm(contact), norm(body)});
+  const double scale = std::max({norm(supports), norm(loads), norm(contact), norm(body), largestPart});
   out.balance = {{"supports", firstComponents(supports, d)},
                  {"loads", firstComponents(loads, d)},
                  {"contact", firstComponents(contact, d)},

@@ -13,7 +13,7 @@ namespace sc::app {
 
 struct CycleForces {
   /// part → {type, force (d), moment (3 components in 3D, the z component in 2D)} for every
-  /// part of Type Displacement or Symmetry, in the mesh's part order.
+  /// part of Type Displacement, Symmetry or Normal displacement, in the mesh's part order.
   nlohmann::ordered_json reactions = nlohmann::ordered_json::object();
   /// supports, loads, contact, body (d components each) and relative_residual.
   nlohmann::ordered_json balance = nlohmann::ordered_json::object();

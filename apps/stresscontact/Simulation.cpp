@@ -121,10 +121,11 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
   // is ill-posed here). Say so now rather than let the solver fail (docs/reliability.md).
-  // Symmetry parts can fix them too when they are normal to every axis (checked with the mesh,
+  // Symmetry and Normal displacement parts can fix them too (checked with the mesh,
   // assembly::checkLoadsAndSupports).
   if (boundaryConditions_.boundariesOfType(core::BoundaryType::Displacement).empty() &&
-      boundaryConditions_.boundariesOfType(core::BoundaryType::Symmetry).empty()) {
+      boundaryConditions_.boundariesOfType(core::BoundaryType::Symmetry).empty() &&
+      boundaryConditions_.boundariesOfType(core::BoundaryType::NormalDisplacement).empty()) {
     std::ostringstream given;
     for (const auto& bc : boundaryConditions_.conditions)
       given << (given.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' (" << core::toString(bc.type) << ")";
@@ -134,8 +135,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                     << "): rigid-body motions are not fixed and the problem is ill-posed in the "
                     << "stress-based formulation (contact and tractions do not fix them). Give at "
                     << "least one boundary part <ParameterList name=\"...\"> with Type = "
-                    << "'Displacement' and a Value, or Type 'Symmetry' on parts normal to every "
-                    << "axis.");
+                    << "'Displacement' and a Value, or Type 'Symmetry' on parts that hold every "
+                    << "rigid motion.");
   }
 
   exact_ = core::createExactSolution(problem_.exactSolution, dim, material_,
@@ -225,6 +226,11 @@ void Simulation::setupMesh()
                                           ? &plane
                                           : nullptr) >= 0;
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
+  if (std::any_of(boundaryConditions_.conditions.begin(), boundaryConditions_.conditions.end(),
+                  [](const auto& c) { return c.inNormalFrame(); }) &&
+      mesh::MeshFactory::hasCurvedElements(params_->sublist("Mesh"), *refiner_))
+    assembly::checkNormalFramePartsFlat(
+        *mesh_, boundaryConditions_, *mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_));
   if (boundaryConditions_.hasContact()) {
     // Every load step's obstacle position, before anything is written (a step that moves the
     // obstacle off the body, or too deep into it, is an input error of the deck).

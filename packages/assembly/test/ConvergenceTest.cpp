@@ -182,8 +182,90 @@ void symmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStrea
   TEST_COMPARE(fittedRate(r, &ErrorNorms::displacement), >=, minRate);
 }
 
+// The same solution rotated by 30° about the origin, on the rotated unit square
+// (tests/data/inclined_square.geo, meshed by Gmsh): its Left and Bottom are inclined symmetry
+// lines, u·n = 0 and zero tangential traction imposed in each part's normal–tangential frame
+// (docs/theory.md §"Loads and supports"). The rotated solution is x ↦ R u(Rᵀx), σ ↦ R σ Rᵀ,
+// f ↦ R f, θ unchanged. Source of the expected rates: a priori theory, O(h^{k+1}).
+class RotatedSolution : public sc::core::ExactSolution {
+public:
+  RotatedSolution(std::unique_ptr<sc::core::ExactSolution> u, double angle)
+    : u_(std::move(u)), c_(std::cos(angle)), s_(std::sin(angle))
+  {
+  }
+  int dim() const override { return 2; }
+  void stress(const double* x, double* s) const override
+  {
+    double x0[2], s0[4];
+    back(x, x0);
+    u_->stress(x0, s0);
+    const double R[2][2] = {{c_, -s_}, {s_, c_}};
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        s[i * 2 + j] = 0.0;
+        for (int a = 0; a < 2; ++a)
+          for (int b = 0; b < 2; ++b)
+            s[i * 2 + j] += R[i][a] * s0[a * 2 + b] * R[j][b];
+      }
+  }
+  void displacement(const double* x, double* u) const override { rotated(x, u, &ExactSolution::displacement); }
+  void rotation(const double* x, double* t) const override
+  {
+    double x0[2];
+    back(x, x0);
+    u_->rotation(x0, t);
+  }
+  void bodyForce(const double* x, double* f) const override { rotated(x, f, &ExactSolution::bodyForce); }
+
+private:
+  void back(const double* x, double* x0) const
+  {
+    x0[0] = c_ * x[0] + s_ * x[1];
+    x0[1] = -s_ * x[0] + c_ * x[1];
+  }
+  void rotated(const double* x, double* v, void (ExactSolution::*field)(const double*, double*) const) const
+  {
+    double x0[2], v0[2];
+    back(x, x0);
+    ((*u_).*field)(x0, v0);
+    v[0] = c_ * v0[0] - s_ * v0[1];
+    v[1] = s_ * v0[0] + c_ * v0[1];
+  }
+  std::unique_ptr<sc::core::ExactSolution> u_;
+  double c_, s_;
+};
+
+void inclinedSymmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStream& out, bool& success)
+{
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  VerificationSetup s;
+  s.source = "Gmsh geometry";
+  s.file = SC_TEST_DATA_DIR "/inclined_square.geo";
+  s.dim = 2;
+  s.meshSize = 0.25;
+  s.levels = levels;
+  s.initialRefinements = 1;
+  s.degree = k;
+  s.nu = 0.5;
+  s.solver = "MUMPS";
+  s.exactOverride = std::make_shared<RotatedSolution>(
+      sc::core::createExactSolution(s.exact, 2, sc::core::Material{s.E, s.nu}, s.wavenumber), M_PI / 6);
+  s.boundaryConditions = {{"Left", sc::core::BoundaryType::Symmetry, {}, false},
+                          {"Bottom", sc::core::BoundaryType::Symmetry, {}, false},
+                          {"Right", sc::core::BoundaryType::Traction, {}, true},
+                          {"Top", sc::core::BoundaryType::Traction, {}, true}};
+  const auto r = solveVerification(s, comm);
+  out << "\ninclined symmetry lines Left and Bottom (square rotated by 30 degrees)";
+  report(out, s, r);
+  TEST_COMPARE(fittedRate(r, &ErrorNorms::stress), >=, minRate);
+  TEST_COMPARE(fittedRate(r, &ErrorNorms::stressDiv), >=, minRate);
+  TEST_COMPARE(fittedRate(r, &ErrorNorms::displacement), >=, minRate);
+}
+
 TEUCHOS_UNIT_TEST(Convergence, SymmetryLinesDegree1) { symmetryConvergence(1, 4, 1.9, out, success); }
 TEUCHOS_UNIT_TEST(Convergence, SymmetryLinesDegree2) { symmetryConvergence(2, 3, 2.9, out, success); }
+TEUCHOS_UNIT_TEST(Convergence, InclinedSymmetryLinesDegree1) { inclinedSymmetryConvergence(1, 3, 1.9, out, success); }
+TEUCHOS_UNIT_TEST(Convergence, InclinedSymmetryLinesDegree2) { inclinedSymmetryConvergence(2, 3, 2.9, out, success); }
 
 TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree1) { convergence(2, 1, 4, 0.25, 1, false, 1.9, out, success); }
 TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree2) { convergence(2, 2, 4, 0.25, 1, false, 2.9, out, success); }

@@ -168,6 +168,67 @@ private:
   double p_, eps_;
 };
 
+// Uniaxial stress T along e1 of an orthonormal frame Q = (e1 e2 [e3]) (columns), 2D or 3D: σ = T
+// e1 ⊗ e1, u = Q (ε x', −ν' ε y'[, −ν' ε z']) with x' = Qᵀx and ε = T/E', θ = 0 (§1, rotated).
+// In 3D E' = E, ν' = ν.
+class RotatedUniaxial : public sc::core::ExactSolution {
+public:
+  RotatedUniaxial(int dim, double T, const sc::core::Material& m, const std::array<double, 9>& Q)
+    : d_(dim), T_(T), E_(dim == 3 ? m.youngModulus : Effective(m).E), nu_(dim == 3 ? m.poissonRatio : Effective(m).nu), Q_(Q)
+  {
+  }
+  int dim() const override { return d_; }
+  double q(int i, int j) const { return Q_[i * 3 + j]; }  // component i of e_j
+  void stress(const double*, double* s) const override
+  {
+    for (int i = 0; i < d_; ++i)
+      for (int j = 0; j < d_; ++j)
+        s[i * d_ + j] = T_ * q(i, 0) * q(j, 0);
+  }
+  void displacement(const double* x, double* u) const override
+  {
+    const double eps = T_ / E_;
+    double local[3] = {0, 0, 0};
+    for (int j = 0; j < d_; ++j) {
+      double xj = 0.0;
+      for (int i = 0; i < d_; ++i)
+        xj += q(i, j) * x[i];
+      local[j] = (j == 0 ? eps : -nu_ * eps) * xj;
+    }
+    for (int i = 0; i < d_; ++i) {
+      u[i] = 0.0;
+      for (int j = 0; j < d_; ++j)
+        u[i] += q(i, j) * local[j];
+    }
+  }
+  void rotation(const double*, double* t) const override { t[0] = t[1] = t[2] = 0.0; }
+  void bodyForce(const double*, double* f) const override { f[0] = f[1] = f[2] = 0.0; }
+
+private:
+  int d_;
+  double T_, E_, nu_;
+  std::array<double, 9> Q_;
+};
+
+// The rotation by `angle` about the unit axis (Rodrigues), row-major 3×3: its columns are the
+// images of e1, e2, e3. In 2D the axis is e3.
+std::array<double, 9> rotationMatrix(std::array<double, 3> axis, double angle)
+{
+  const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  for (auto& a : axis)
+    a /= norm;
+  const double c = std::cos(angle), s = std::sin(angle);
+  std::array<double, 9> R{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      R[i * 3 + j] = (i == j ? c : 0.0) + (1 - c) * axis[i] * axis[j];
+      const int k = 3 - i - j;
+      if (i != j)
+        R[i * 3 + j] += ((j - i + 3) % 3 == 1 ? -1.0 : 1.0) * s * axis[k];
+    }
+  return R;
+}
+
 // ------------------------------------------------------------------ deck data and the solve
 Teuchos::Array<std::string> formulas(const std::vector<std::string>& list)
 {
@@ -176,13 +237,13 @@ Teuchos::Array<std::string> formulas(const std::vector<std::string>& list)
 
 // The Boundary Conditions sublist as a deck gives it, validated and read as the application
 // reads it.
-sc::core::BoundaryConditions readConditions(Teuchos::ParameterList bc)
+sc::core::BoundaryConditions readConditions(Teuchos::ParameterList bc, int dim = 2)
 {
   Teuchos::ParameterList deck, valid;
   deck.set("Boundary Conditions", bc);
   valid.set("Boundary Conditions", *sc::core::BoundaryConditions::getValidParameters());
   sc::core::validateParameters(deck, valid, "test");
-  return sc::core::BoundaryConditions::fromParameters(deck.sublist("Boundary Conditions"), 2);
+  return sc::core::BoundaryConditions::fromParameters(deck.sublist("Boundary Conditions"), dim);
 }
 
 sc::core::BodyForce readBodyForce(Teuchos::ParameterList list)
@@ -198,6 +259,8 @@ sc::core::BodyForce readBodyForce(Teuchos::ParameterList list)
 
 struct MeshSpec {
   std::string source = "Unit square";
+  std::string file;  ///< Mesh/File of a Gmsh geometry
+  int dim = 2;
   double size = 0.25;
   std::vector<double> lower = {0, 0}, upper = {1, 1};
   int refinements = 0;
@@ -214,11 +277,13 @@ std::vector<sc::assembly::ErrorNorms> solve(const MeshSpec& spec, int degree,
   meshList.set("Source", spec.source);
   meshList.set("Initial mesh size", spec.size);
   meshList.set("Uniform refinements", spec.refinements);
+  if (!spec.file.empty())
+    meshList.set("File", spec.file);
   if (spec.source == "Rectangle") {
     meshList.set("Lower corner", Teuchos::Array<double>(spec.lower.begin(), spec.lower.end()));
     meshList.set("Upper corner", Teuchos::Array<double>(spec.upper.begin(), spec.upper.end()));
   }
-  auto refiner = sc::mesh::MeshFactory::build(meshList, 2);
+  auto refiner = sc::mesh::MeshFactory::build(meshList, spec.dim);
   auto m = refiner->mesh();
   Teuchos::RCP<const sc::mesh::CurvedElements> curved;
   if (spec.geometryOrder == 2)
@@ -336,6 +401,79 @@ TEUCHOS_UNIT_TEST(Loads, PressureOnSymmetryQuarterPlaneStrainAndStress)
     // (1 − ν²) = 0.91: the models' displacements differ by 9% or more.
     TEST_COMPARE(errors[1].displacement, >=, 0.05 * errors[1].displacementNorm);
   }
+}
+
+// (c') Rollers on inclined sides (Symmetry and Normal displacement on parts whose normal is no
+// coordinate axis; docs/theory.md §"Loads and supports"): the bar [0, 2] × [0, 1] rotated by 30°
+// (tests/data/inclined_bar.geo, meshed by Gmsh: unstructured), rollers on its End (x' = 0) and
+// Base (y' = 0), loaded on Load (x' = 2) by a Pressure −T, by a Normal displacement δ (Value) or
+// the same δ as an Expression, Top free: the uniaxial state σ = T e1 ⊗ e1 along the bar (T =
+// E' δ/2 for the displacement), u linear. RT_k holds σ and DP_k u, so σ_h = σ and u_h = u to
+// round-off at k = 1 and 2.
+TEUCHOS_UNIT_TEST(Loads, InclinedBarWithRollers)
+{
+  const sc::core::Material material{3.0, 0.3};
+  const auto Q = rotationMatrix({0, 0, 1}, M_PI / 6);
+  MeshSpec mesh;
+  mesh.source = "Gmsh geometry";
+  mesh.file = SC_TEST_DATA_DIR "/inclined_bar.geo";
+  mesh.size = 0.4;
+  const double T = 2.0, delta = 0.01;
+  for (int variant = 0; variant < 3; ++variant) {
+    Teuchos::ParameterList bc;
+    bc.sublist("End").set("Type", std::string("Symmetry"));
+    bc.sublist("Base").set("Type", std::string("Symmetry"));
+    double stress = T;
+    if (variant == 0) {
+      bc.sublist("Load").set("Type", std::string("Pressure"));
+      bc.sublist("Load").set("Value", Teuchos::Array<double>(1, -T));
+    } else {
+      bc.sublist("Load").set("Type", std::string("Normal displacement"));
+      if (variant == 1)
+        bc.sublist("Load").set("Value", Teuchos::Array<double>(1, delta));
+      else
+        bc.sublist("Load").set("Expression", formulas({"0.5*0.02"}));
+      stress = Effective(material).E * delta / 2.0;
+    }
+    sc::assembly::ElasticityData data{material, readConditions(bc)};
+    const RotatedUniaxial exact(2, stress, material, Q);
+    for (int k : {1, 2}) {
+      const auto e = solve(mesh, k, data, exact);
+      out << "variant " << variant << ", k = " << k << ": |s-sh|/|s| = " << e.stress / e.stressNorm
+          << ", |u-uh|/|u| = " << e.displacement / e.displacementNorm << "\n";
+      TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
+      TEST_COMPARE(e.stressDiv, <=, 1e-10 * e.stressNorm);
+      TEST_COMPARE(e.displacement, <=, 1e-10 * e.displacementNorm);
+      TEST_COMPARE(e.rotation, <=, 1e-10 * e.displacementNorm);
+    }
+  }
+}
+
+// The same in 3D: the box [0, 2] × [0, 1] × [0, 1] rotated by 0.5 rad about (1, 2, 3)
+// (tests/data/inclined_box.geo, OpenCASCADE), rollers on the three oblique faces x' = 0, y' = 0,
+// z' = 0 and a Normal displacement δ on x' = 2: σ = E δ/2 e1 ⊗ e1 and u to round-off (k = 1).
+TEUCHOS_UNIT_TEST(Loads, InclinedBoxWithRollers3D)
+{
+  const sc::core::Material material{3.0, 0.3};
+  const auto Q = rotationMatrix({1, 2, 3}, 0.5);
+  MeshSpec mesh;
+  mesh.source = "Gmsh geometry";
+  mesh.file = SC_TEST_DATA_DIR "/inclined_box.geo";
+  mesh.size = 0.6;
+  mesh.dim = 3;
+  const double delta = 0.01;
+  Teuchos::ParameterList bc;
+  for (const char* name : {"End", "Base", "Bottom"})
+    bc.sublist(name).set("Type", std::string("Symmetry"));
+  bc.sublist("Load").set("Type", std::string("Normal displacement"));
+  bc.sublist("Load").set("Value", Teuchos::Array<double>(1, delta));
+  sc::assembly::ElasticityData data{material, readConditions(bc, 3)};
+  const RotatedUniaxial exact(3, material.youngModulus * delta / 2.0, material, Q);
+  const auto e = solve(mesh, 1, data, exact);
+  out << "|s-sh|/|s| = " << e.stress / e.stressNorm << ", |u-uh|/|u| = " << e.displacement / e.displacementNorm << "\n";
+  TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
+  TEST_COMPARE(e.displacement, <=, 1e-10 * e.displacementNorm);
+  TEST_COMPARE(e.rotation, <=, 1e-10 * e.displacementNorm);
 }
 
 // (b, e) Pure bending: the moment by a linear Traction Expression on Right, a Symmetry plane on
@@ -464,8 +602,8 @@ TEUCHOS_UNIT_TEST(Loads, ClosedFormSolutionsAreExact)
   }
 }
 
-// Symmetry parts must lie in a plane x_i = const, and without a Displacement part they must
-// hold the body along every axis.
+// Symmetry parts must be flat, and without a Displacement part they must hold every rigid motion
+// (an inclined part: its normal's direction and the rotation).
 TEUCHOS_UNIT_TEST(Loads, SymmetryPartsAreChecked)
 {
   const sc::core::Material material{1.0, 0.3};
@@ -486,8 +624,8 @@ TEUCHOS_UNIT_TEST(Loads, SymmetryPartsAreChecked)
   arc.sublist("Top").set("Type", std::string("Displacement"));
   arc.sublist("Top").set("Value", Teuchos::Array<double>(2, 0.0));
   TEST_ASSERT(message("Half disc", arc).find("'Boundary Conditions/Arc/Type' = 'Symmetry' needs a "
-                                             "part that lies on a line x = const or y = const") !=
-              std::string::npos);
+                                             "flat part (a straight line, of any orientation), "
+                                             "but 'Arc' is not flat") != std::string::npos);
   Teuchos::ParameterList one;
   one.sublist("Left").set("Type", std::string("Symmetry"));
   one.sublist("Top").set("Type", std::string("Pressure"));
@@ -496,6 +634,35 @@ TEUCHOS_UNIT_TEST(Loads, SymmetryPartsAreChecked)
                                                "body along y)") != std::string::npos);
   one.sublist("Bottom").set("Type", std::string("Symmetry"));
   TEST_EQUALITY(message("Unit square", one), "");
+  // The inclined square (30°): Left alone leaves the translation along Left, e2 = (−1/2, √3/2);
+  // Left and Bottom hold the square.
+  auto inclined = [&](Teuchos::ParameterList bc) {
+    Teuchos::ParameterList meshList;
+    meshList.set("Source", std::string("Gmsh geometry"));
+    meshList.set("File", std::string(SC_TEST_DATA_DIR "/inclined_square.geo"));
+    meshList.set("Initial mesh size", 0.5);
+    auto m = sc::mesh::MeshFactory::build(meshList, 2)->mesh();
+    try {
+      sc::assembly::checkLoadsAndSupports(*m, {material, readConditions(bc)});
+    } catch (const sc::core::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  Teuchos::ParameterList tilted = one;
+  tilted.remove("Bottom");
+  out << inclined(tilted) << "\n";
+  TEST_ASSERT(inclined(tilted).find("Symmetry parts 'Left' (normal (-0.866025, -0.5)) leave "
+                                    "rigid-body motions free (nothing holds the body along "
+                                    "(0.5, -0.866025))") != std::string::npos);
+  tilted.sublist("Bottom").set("Type", std::string("Normal displacement"));
+  tilted.sublist("Bottom").set("Value", Teuchos::Array<double>(1, 0.1));
+  TEST_EQUALITY(inclined(tilted), "");
+  // Two parallel sides hold the rotation, but not the translation along them.
+  Teuchos::ParameterList parallel = tilted;
+  parallel.remove("Bottom");
+  parallel.sublist("Right").set("Type", std::string("Symmetry"));
+  TEST_ASSERT(inclined(parallel).find("nothing holds the body along (0.5, -0.866025))") != std::string::npos);
   // A formula that is not finite on the body, found at a vertex.
   Teuchos::ParameterList bad = one;
   bad.sublist("Top").remove("Value");

@@ -1,6 +1,6 @@
 #include "sc/assembly/BodySupports.hpp"
 
-#include <set>
+#include <map>
 #include <sstream>
 
 #include <sc/assembly/LoadsAndSupports.hpp>
@@ -16,24 +16,25 @@ void checkEveryBodyIsHeld(const mesh::SimplexMesh& m, const core::BoundaryCondit
   if (bodies.size() < 2)
     return;
   const int d = m.dim();
-  const auto axes = symmetryAxes(m, bcs);
+  const auto frames = normalFrameParts(m, bcs);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     bool held = false;
-    std::set<int> normal;  // axes of the body's Symmetry parts
+    std::map<std::string, NormalFramePart> bodyFrames;  // the body's Symmetry parts
     std::ostringstream parts;
     for (int id : bodies[b].boundaryIds) {
       const std::string& name = m.boundaryName(id);
       const core::BoundaryCondition* bc = bcs.find(name);
       const core::BoundaryType type = bc ? bc->type : core::BoundaryType::Free;
       held = held || type == core::BoundaryType::Displacement;
-      parts << (parts.tellp() > 0 ? ", " : "") << "'" << name << "' (" << core::toString(type);
-      if (type == core::BoundaryType::Symmetry) {
-        normal.insert(axes.at(name));
-        parts << ", " << "xyz"[axes.at(name)] << " = const";
+      parts << "'" << name << "' (" << core::toString(type);
+      if (bc && bc->inNormalFrame()) {
+        bodyFrames[name] = frames.at(name);
+        parts << ", " << describePlane(frames.at(name), d);
       }
       parts << (bc ? "" : ", not in 'Boundary Conditions'") << ")";
+      parts << (id == bodies[b].boundaryIds.back() ? "" : ", ");
     }
-    held = held || static_cast<int>(normal.size()) == d;
+    held = held || (!bodyFrames.empty() && freeRigidMotions(m, bodyFrames, &bodies[b].elements).empty());
     SC_THROW_IF(!held, core::InputError,
                 "the mesh of " << m.origin() << " holds " << bodies.size()
                     << " bodies that share no face, and body " << b + 1 << " of "
@@ -42,7 +43,8 @@ void checkEveryBodyIsHeld(const mesh::SimplexMesh& m, const core::BoundaryCondit
                     << parts.str() << ". Nothing fixes its rigid-body motions (contact, "
                     << "tractions, pressures and Free parts do not), so the problem is "
                     << "ill-posed. Give one of its parts Type 'Displacement', or give it Symmetry "
-                    << "parts normal to every axis; a part may span several bodies.");
+                    << "parts that hold every rigid motion (e.g. normal to every axis); a part may "
+                    << "span several bodies.");
   }
 }
 

@@ -52,6 +52,79 @@ void solveDense(std::vector<double> M, std::vector<double>& r, int n)
   }
 }
 
+// The face DOFs of one RT function φ_l on a face in the normal–tangential frame: slot[i] is the
+// element-local DOF of stress row i (its coefficient s_i, so that σn = Σ_l s_l (φ_l·n) on the
+// face), and R the orthogonal matrix whose row p, stored in slot[p], is the direction of the
+// frame component w_p = R_p·s: the normal n in the slot of the row a = argmax |n_a|, tangents in
+// the others (docs/theory.md §"Loads and supports").
+struct FrameTuple {
+  int slot[3] = {0, 0, 0};
+  double R[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+};
+
+// The frame of the outward unit normal n: row a = argmax |n_c| is n, the others unit tangents
+// (e_b and ±e_c exactly when n = ±e_a).
+void normalFrame(const double* n, int d, int& a, double R[3][3])
+{
+  a = 0;
+  for (int c = 1; c < d; ++c)
+    if (std::abs(n[c]) > std::abs(n[a]))
+      a = c;
+  for (int c = 0; c < d; ++c)
+    R[a][c] = n[c];
+  if (d == 2) {
+    const int b = 1 - a;
+    R[b][0] = -n[1], R[b][1] = n[0];
+    return;
+  }
+  const int b = (a + 1) % 3, c2 = (a + 2) % 3;
+  double t1[3] = {0, 0, 0};
+  t1[b] = 1.0;
+  for (int c = 0; c < 3; ++c)
+    t1[c] -= n[b] * n[c];
+  const double norm = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+  for (int c = 0; c < 3; ++c)
+    R[b][c] = t1[c] / norm;
+  R[c2][0] = n[1] * R[b][2] - n[2] * R[b][1];
+  R[c2][1] = n[2] * R[b][0] - n[0] * R[b][2];
+  R[c2][2] = n[0] * R[b][1] - n[1] * R[b][0];
+}
+
+// K ← M K Mᵀ and F ← M F on the slots of each tuple (M = R: to the frame; M = Rᵀ: back).
+void transformFrames(std::vector<double>& K, std::vector<double>& F, int L, int d,
+                     const std::vector<FrameTuple>& tuples, bool transpose)
+{
+  auto M = [&](const FrameTuple& t, int p, int i) { return transpose ? t.R[i][p] : t.R[p][i]; };
+  double tmp[3];
+  for (const auto& t : tuples) {
+    for (int j = 0; j < L; ++j) {  // rows
+      for (int p = 0; p < d; ++p) {
+        tmp[p] = 0.0;
+        for (int i = 0; i < d; ++i)
+          tmp[p] += M(t, p, i) * K[static_cast<std::size_t>(t.slot[i]) * L + j];
+      }
+      for (int p = 0; p < d; ++p)
+        K[static_cast<std::size_t>(t.slot[p]) * L + j] = tmp[p];
+    }
+    for (int j = 0; j < L; ++j) {  // columns
+      for (int p = 0; p < d; ++p) {
+        tmp[p] = 0.0;
+        for (int i = 0; i < d; ++i)
+          tmp[p] += M(t, p, i) * K[static_cast<std::size_t>(j) * L + t.slot[i]];
+      }
+      for (int p = 0; p < d; ++p)
+        K[static_cast<std::size_t>(j) * L + t.slot[p]] = tmp[p];
+    }
+    for (int p = 0; p < d; ++p) {
+      tmp[p] = 0.0;
+      for (int i = 0; i < d; ++i)
+        tmp[p] += M(t, p, i) * F[t.slot[i]];
+    }
+    for (int p = 0; p < d; ++p)
+      F[t.slot[p]] = tmp[p];
+  }
+}
+
 }  // namespace
 
 const std::vector<AsymmetryTerm>& asymmetryTerms(int dim)
@@ -164,7 +237,8 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
   }
   const bool bodyForce = data.hasBodyForce();
   // The same on every rank (replicated mesh): a bad Symmetry part fails on all ranks together.
-  const auto symmetryAxis = symmetryAxes(m, data.boundaryConditions);
+  const auto frameParts = normalFrameParts(m, data.boundaryConditions);
+  std::vector<FrameTuple> frames;
 
   disc::ElementValues ev(S, 2 * k + 2);
   disc::FaceValues fv(S, 2 * k + 2);
@@ -189,6 +263,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
     std::fill(G.begin(), G.end(), 0.0);
     std::fill(P.begin(), P.end(), 0.0);
     std::fill(constrained.begin(), constrained.end(), 0);
+    frames.clear();
     ev.reinit(e);
     auto KK = [&](int i, int j) -> double& { return K[static_cast<std::size_t>(i) * L + j]; };
     for (int q = 0; q < ev.numPoints(); ++q) {
@@ -238,7 +313,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
                 inv2mu * ((i == j ? G[a * nRT + bb] : 0.0) - cd * P[((i * d + j) * nRT + a) * nRT + bb]);
 
     // Boundary faces: natural u_D, essential t (projected; −p n for a pressure), free (t = 0),
-    // and Symmetry (the tangential rows zero).
+    // and Symmetry / Normal displacement (the tangential components zero).
     const int* faces = m.elementFaces(e);
     for (int lf = 0; lf <= d; ++lf) {
       const int f = faces[lf];
@@ -265,18 +340,51 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
         }
         continue;
       }
-      // Symmetry in x_a = const: σ_i·n = σ_ia n_a = 0 for the rows i ≠ a; row a stays free and
-      // its natural data u_a = 0 adds nothing to the right-hand side.
-      if (type == core::BoundaryType::Symmetry) {
-        const int a = symmetryAxis.at(bc->boundary);
-        for (int i = 0; i < d; ++i) {
-          if (i == a)
-            continue;
-          for (int l = 0; l < nF; ++l) {
-            const int c = S.stressOffset(i) + faceDofs[l];
-            constrained[c] = 1;
-            constrainedValue[c] = 0.0;
+      // Symmetry (g = 0) and Normal displacement on a flat part with the outward normal n: in
+      // the frame w = R s of each face DOF's row coefficients the tangential components are zero
+      // (essential, σn ∥ n) and the normal one is free, with the natural data ⟨g, τ·n⟩, the
+      // load of u_D = g n (docs/theory.md §"Loads and supports"). Axis-normal parts: R is a
+      // signed permutation and this is the elimination of the rows i ≠ a.
+      if (bc && bc->inNormalFrame()) {
+        const double* n = frameParts.at(bc->boundary).normal.data();
+        if (S.isCurved(e)) {
+          // A curved element's face on the part must still be flat (its normal n everywhere).
+          fv.reinit(e, lf);
+          for (int q = 0; q < fv.numPoints(); ++q) {
+            double dev = 0.0;
+            for (int c = 0; c < d; ++c)
+              dev += std::pow(fv.normal(q)[c] - n[c], 2);
+            SC_THROW_IF(std::sqrt(dev) > 1e-9, core::InputError,
+                        "'Boundary Conditions/" << bc->boundary << "/Type' = '"
+                            << core::toString(bc->type) << "' needs a flat part, but '"
+                            << bc->boundary << "' is curved (its quadratic faces, Mesh/Geometry "
+                            << "order = 2, turn their normal by " << std::sqrt(dev) << " rad): "
+                            << "conditions in the normal–tangential frame of curved parts are "
+                            << "not supported (docs/theory.md §\"Loads and supports\").");
           }
+        }
+        if (type == core::BoundaryType::NormalDisplacement && !bc->isZero()) {
+          fv.reinit(e, lf);
+          for (int q = 0; q < fv.numPoints(); ++q) {
+            double uD[3] = {0, 0, 0};
+            bc->evaluate(fv.point(q), n, d, exact, uD);
+            for (int i = 0; i < d; ++i)
+              for (int a : faceDofs)
+                F[S.stressOffset(i) + a] += fv.weight(q) * uD[i] * fv.stressNormal(a, q);
+          }
+        }
+        int a = 0;
+        FrameTuple t;
+        normalFrame(n, d, a, t.R);
+        for (int l = 0; l < nF; ++l) {
+          for (int i = 0; i < d; ++i) {
+            t.slot[i] = S.stressOffset(i) + faceDofs[l];
+            if (i != a) {
+              constrained[t.slot[i]] = 1;
+              constrainedValue[t.slot[i]] = 0.0;
+            }
+          }
+          frames.push_back(t);
         }
         continue;
       }
@@ -314,7 +422,9 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
           constrainedValue[c] = values[i * nF + l];
         }
     }
-    // Symmetric elimination of the constrained DOFs, with a diagonal of the A block's size.
+    // Symmetric elimination of the constrained DOFs, with a diagonal of the A block's size; the
+    // normal-frame faces' DOFs in their frame during it.
+    transformFrames(K, F, L, d, frames, false);
     double diag = 0.0;
     int nd = 0;
     for (int i = 0; i < d * nRT; ++i)
@@ -337,6 +447,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       KK(c, c) = diag;
       F[c] = diag * g;
     }
+    transformFrames(K, F, L, d, frames, true);
     const long long* g = S.elementDofs(e);
     std::copy(g, g + L, gids.begin());
     for (int i = 0; i < L; ++i) {

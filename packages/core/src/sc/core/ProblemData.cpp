@@ -104,6 +104,7 @@ std::string toString(BoundaryType type)
   case BoundaryType::Traction: return "Traction";
   case BoundaryType::Pressure: return "Pressure";
   case BoundaryType::Symmetry: return "Symmetry";
+  case BoundaryType::NormalDisplacement: return "Normal displacement";
   case BoundaryType::Contact: return "Contact";
   case BoundaryType::Free: return "Free";
   }
@@ -119,18 +120,23 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
                     "One sublist per boundary part, named as the mesh names it (e.g. 'Top', "
                     "'Arc'). Parts not listed are traction-free.");
     declareChoice(t, "Type", "Free",
-                  {"Displacement", "Traction", "Pressure", "Symmetry", "Contact", "Free"},
+                  {"Displacement", "Traction", "Pressure", "Symmetry", "Normal displacement",
+                   "Contact", "Free"},
                   "Displacement: u = u_D (natural in the stress formulation); Traction: σn = t "
                   "(essential); Pressure: σn = −p n, n the outward normal of the face (essential; "
                   "n varies along curved faces); Symmetry: u·n = 0 and zero tangential traction "
-                  "(a symmetry plane or a roller), for a flat part normal to a coordinate axis "
-                  "(x_i = const); "
+                  "(a symmetry plane, a roller or a sliding support); Normal displacement: u·n = g "
+                  "(Value {g} or Expression {g}; g > 0 moves the part outwards) and zero "
+                  "tangential traction. Symmetry and Normal displacement need a flat part (a "
+                  "line in 2D, a plane in 3D) of any orientation, n its outward normal; a curved "
+                  "part is an input error. "
                   "Contact: unilateral contact with the Contact/Obstacle; Free: σn = 0 "
                   "(docs/theory.md §\"Loads and supports\").");
     declareRealArray(t, "Value", Teuchos::Array<double>(),
-                     "Constant data: u_D or t (one number per space dimension) or p (one "
-                     "number). Displacement, Traction and Pressure take exactly one of Value, "
-                     "Expression and Data = 'Exact solution'.",
+                     "Constant data: u_D or t (one number per space dimension), p or g (one "
+                     "number). Displacement, Traction, Pressure and Normal displacement take "
+                     "exactly one of Value, Expression and Data = 'Exact solution' (the last for "
+                     "Displacement and Traction only).",
                      {0, 1, 2, 3});
     declareExpressionArray(t, "Expression",
                            "The data as formulas of x, y, z (one per component, like Value), "
@@ -168,6 +174,7 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
               : type == "Traction"   ? BoundaryType::Traction
               : type == "Pressure"   ? BoundaryType::Pressure
               : type == "Symmetry"   ? BoundaryType::Symmetry
+              : type == "Normal displacement" ? BoundaryType::NormalDisplacement
               : type == "Contact"    ? BoundaryType::Contact
                                      : BoundaryType::Free;
     bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
@@ -185,14 +192,16 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
     const bool hasValue = !bc.value.empty() || !bc.valuesPerStep.empty(),
                hasExpression = !bc.expression.empty();
     if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction ||
-        bc.type == BoundaryType::Pressure) {
-      const bool pressure = bc.type == BoundaryType::Pressure;
+        bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement) {
+      // Pressure and Normal displacement take one scalar (p, g).
+      const bool pressure = bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement;
+      const char* scalar = bc.type == BoundaryType::Pressure ? "the pressure p" : "the normal displacement g";
       SC_THROW_IF(hasValue && hasExpression, InputError,
                   "'" << key << "/Value' and '" << key << "/Expression' are both given; give one "
                       << "of them (Value: constants, Expression: formulas of x, y, z).");
       SC_THROW_IF(bc.fromExactSolution && pressure, InputError,
                   "'" << key << "/Data' = 'Exact solution' is for Type Displacement or Traction; "
-                      << "Type Pressure takes 'Value' or 'Expression' (one number or formula).");
+                      << "Type " << type << " takes 'Value' or 'Expression' (one number or formula).");
       SC_THROW_IF(bc.fromExactSolution && (hasValue || hasExpression), InputError,
                   "'" << key << "/Data' = 'Exact solution' takes the data from 'Problem/Exact "
                       << "solution', but '" << key << "/" << (hasValue ? "Value" : "Expression")
@@ -204,20 +213,20 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                       << ") or '" << key << "/Expression' (formulas of x, y, z"
                       << (pressure ? "" : ", one per component") << ").");
       const std::size_t expected = pressure ? 1 : static_cast<std::size_t>(dimension);
-      const char* what = pressure ? "one value (the pressure p)" : "one value per dimension";
+      const std::string what = pressure ? std::string("one value (") + scalar + ")" : "one value per dimension";
       SC_THROW_IF(!bc.valuesPerStep.empty() && bc.valuesPerStep.size() % expected != 0, InputError,
                   "'" << key << "/Values per step' has " << bc.valuesPerStep.size()
                       << " numbers, which is not a whole number of rows of " << expected
-                      << (pressure ? " (the pressure p per step)" : " (one value per dimension per step)")
+                      << (pressure ? std::string(" (") + scalar + " per step)" : std::string(" (one value per dimension per step)"))
                       << ".");
       SC_THROW_IF(!bc.value.empty() && bc.value.size() != expected, InputError,
                   "'" << key << "/Value' has " << bc.value.size() << " components, but "
-                      << (pressure ? "Type Pressure takes one"
+                      << (pressure ? "Type " + type + " takes one"
                                    : "Problem/Dimension is " + std::to_string(dimension))
                       << ": give " << what << ".");
       SC_THROW_IF(hasExpression && bc.expression.size() != expected, InputError,
                   "'" << key << "/Expression' has " << bc.expression.size() << " formulas, but "
-                      << (pressure ? "Type Pressure takes one"
+                      << (pressure ? "Type " + type + " takes one"
                                    : "Problem/Dimension is " + std::to_string(dimension))
                       << ": give " << (pressure ? "one formula" : "one formula per dimension")
                       << " (a formula cannot contain a comma: the array is split at commas).");
@@ -228,8 +237,8 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                                                       : "Data";
       SC_THROW_IF(hasValue || hasExpression || bc.fromExactSolution, InputError,
                   "'" << key << "/" << given << "' is given, but Type '" << type
-                      << "' takes no data; remove it or use Type Displacement, Traction or "
-                      << "Pressure.");
+                      << "' takes no data; remove it or use Type Displacement, Traction, "
+                      << "Pressure or Normal displacement.");
     }
     bcs.conditions.push_back(bc);
   }
@@ -241,7 +250,7 @@ void BoundaryConditions::checkStepTables(int numSteps, int dimension) const
   for (const auto& c : conditions) {
     if (c.valuesPerStep.empty())
       continue;
-    const std::size_t row = c.type == BoundaryType::Pressure ? 1 : static_cast<std::size_t>(dimension);
+    const std::size_t row = c.type == BoundaryType::Pressure || c.type == BoundaryType::NormalDisplacement ? 1 : static_cast<std::size_t>(dimension);
     SC_THROW_IF(c.valuesPerStep.size() != row * static_cast<std::size_t>(numSteps), InputError,
                 "'Boundary Conditions/" << c.boundary << "/Values per step' has "
                     << c.valuesPerStep.size() / row << " rows of " << row << ", but 'Load steps/Times' has "
@@ -255,7 +264,7 @@ BoundaryConditions BoundaryConditions::atStep(int step, int dimension) const
   for (auto& c : out.conditions) {
     if (c.valuesPerStep.empty())
       continue;
-    const std::size_t row = c.type == BoundaryType::Pressure ? 1 : static_cast<std::size_t>(dimension);
+    const std::size_t row = c.type == BoundaryType::Pressure || c.type == BoundaryType::NormalDisplacement ? 1 : static_cast<std::size_t>(dimension);
     const auto first = c.valuesPerStep.begin() + static_cast<std::ptrdiff_t>(row * step);
     c.value.assign(first, first + static_cast<std::ptrdiff_t>(row));
   }
@@ -295,15 +304,16 @@ void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>&
     const auto it = std::find_if(conditions.begin(), conditions.end(),
                                  [&](const BoundaryCondition& c) { return c.boundary == name; });
     if (it == conditions.end() ||
-        (it->type != BoundaryType::Displacement && it->type != BoundaryType::Symmetry))
+        (it->type != BoundaryType::Displacement && !it->inNormalFrame()))
       return;  // a traction (given, pressure, zero or contact) part fixes the mean pressure
   }
   SC_THROW_IF(true, InputError,
               "'Material/Poisson ratio' = 0.5 with a Displacement condition on every boundary part ("
                   << joined(meshBoundaries)
-                  << (boundariesOfType(BoundaryType::Symmetry).empty()
+                  << (boundariesOfType(BoundaryType::Symmetry).empty() &&
+                              boundariesOfType(BoundaryType::NormalDisplacement).empty()
                           ? ""
-                          : "; Symmetry parts count as such: c I n = c n is normal")
+                          : "; Symmetry and Normal displacement parts count as such: c I n = c n is normal")
                   << "): the stress is then determined only up to a "
                   << "constant pressure (the compliance of an incompressible material vanishes on "
                   << "the identity) and the discrete problem is singular. Give at least one part "
@@ -368,6 +378,12 @@ void BoundaryCondition::evaluate(const double* x, const double* n, int dim,
     const double p = component(value, expression, 0, x, dim);
     for (int i = 0; i < dim; ++i)
       out[i] = -p * n[i];
+    break;
+  }
+  case BoundaryType::NormalDisplacement: {
+    const double g = component(value, expression, 0, x, dim);
+    for (int i = 0; i < dim; ++i)
+      out[i] = g * n[i];
     break;
   }
   default:

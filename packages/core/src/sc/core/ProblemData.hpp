@@ -66,7 +66,7 @@ struct Material {
   static Material fromParameters(const Teuchos::ParameterList& materialList, int dimension = 2);
 };
 
-enum class BoundaryType { Displacement, Traction, Pressure, Symmetry, Contact, Free };
+enum class BoundaryType { Displacement, Traction, Pressure, Symmetry, NormalDisplacement, Contact, Free };
 std::string toString(BoundaryType type);
 
 class ExactSolution;
@@ -74,7 +74,8 @@ class ExactSolution;
 /// One boundary part's condition (docs/theory.md §"The problem" and §"Loads and supports"). Its
 /// data is `value` (constants), `expression` (formulas of x, y, z) or the exact solution, one
 /// of the three: u_D (Displacement, d components), t (Traction, d) or the pressure p (Pressure,
-/// one). Symmetry (u·n = 0, zero tangential traction), Contact and Free take no data.
+/// one) or g (Normal displacement: u·n = g and zero tangential traction, one). Symmetry (u·n =
+/// 0, zero tangential traction), Contact and Free take no data.
 struct BoundaryCondition {
   std::string boundary;       ///< name of the boundary part (mesh physical name)
   BoundaryType type = BoundaryType::Free;
@@ -86,12 +87,17 @@ struct BoundaryCondition {
   std::vector<double> valuesPerStep;
 
   /// The data at the boundary point x with the outward unit normal n (d components): u_D
-  /// (Displacement), t (Traction: the value, the formulas or σ(x)n of the exact solution) or
-  /// −p(x) n (Pressure); zero for the other types. `exact` is needed when fromExactSolution.
+  /// (Displacement), t (Traction: the value, the formulas or σ(x)n of the exact solution),
+  /// −p(x) n (Pressure) or g(x) n (Normal displacement); zero for the other types. `exact` is needed when fromExactSolution.
   void evaluate(const double* x, const double* n, int dim, const ExactSolution* exact,
                 double* out) const;
   /// True when the data is the constant zero (no formula, no exact solution).
   bool isZero() const;
+  /// Symmetry or Normal displacement: a condition in the part's normal–tangential frame.
+  bool inNormalFrame() const
+  {
+    return type == BoundaryType::Symmetry || type == BoundaryType::NormalDisplacement;
+  }
 };
 /// "Boundary Conditions/<boundary name>/{Type, Value, Expression, Data}". Boundary parts not named in the deck
 /// are traction-free.

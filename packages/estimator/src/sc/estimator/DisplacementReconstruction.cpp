@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include <Intrepid2_DefaultCubatureFactory.hpp>
@@ -299,34 +300,78 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
       I.values_[l * d + i] = c[l];
   }
 
-  // Step 3: u^R = u_D at the nodes of Γ_D faces, and u^R_a = 0 at the nodes of Symmetry faces
-  // in x_a = const (all boundary faces are known on every rank, so a node is set whichever
-  // element of it this rank has).
-  const auto symmetryAxis = assembly::symmetryAxes(m, data.boundaryConditions);
-  for (int f : m.boundaryFaces()) {
-    const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
-    if (!bc || (bc->type != core::BoundaryType::Displacement && bc->type != core::BoundaryType::Symmetry))
-      continue;
-    const int e = m.faceElements(f)[0];
-    const int* faces = m.elementFaces(e);
-    int lf = 0;
-    while (faces[lf] != f)
-      ++lf;
-    for (int a = 0; a < n; ++a) {
-      if (I.lattice[a][lf] != 0)
-        continue;  // not on the face opposite local vertex lf
-      const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * n + a]];
-      if (l < 0)
+  // Step 3: u^R = u_D at the nodes of Γ_D faces; at the other nodes of Symmetry / Normal
+  // displacement faces the nearest value with u^R·n_j = g_j for every such part j at the node
+  // (one part: u^R − (u^R·n − g) n; u^R_a = 0 on x_a = const). All boundary faces are known on
+  // every rank, so a node is set whichever element of it this rank has.
+  const auto frameParts = assembly::normalFrameParts(m, data.boundaryConditions);
+  std::vector<char> dirichletNode(I.overlapNodes.size(), 0);
+  std::map<int, std::vector<std::array<double, 4>>> frameNodes;  // node -> (n, g) per part
+  for (int pass = 0; pass < 2; ++pass)
+    for (int f : m.boundaryFaces()) {
+      const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
+      if (!bc || (pass == 0 ? bc->type != core::BoundaryType::Displacement : !bc->inNormalFrame()))
         continue;
-      if (bc->type == core::BoundaryType::Symmetry) {
-        I.values_[l * d + symmetryAxis.at(bc->boundary)] = 0.0;
-        continue;
+      const int e = m.faceElements(f)[0];
+      const int* faces = m.elementFaces(e);
+      int lf = 0;
+      while (faces[lf] != f)
+        ++lf;
+      for (int a = 0; a < n; ++a) {
+        if (I.lattice[a][lf] != 0)
+          continue;  // not on the face opposite local vertex lf
+        const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * n + a]];
+        if (l < 0)
+          continue;
+        if (pass == 1) {
+          if (dirichletNode[l])
+            continue;
+          const double* normal = frameParts.at(bc->boundary).normal.data();
+          double gn[3] = {0, 0, 0};  // g n
+          bc->evaluate(&I.coords[3 * l], normal, d, data.exactSolution, gn);
+          double g = 0.0;
+          for (int i = 0; i < d; ++i)
+            g += gn[i] * normal[i];
+          auto& list = frameNodes[l];
+          bool seen = false;
+          for (const auto& c : list)
+            seen = seen || (c[0] == normal[0] && c[1] == normal[1] && c[2] == normal[2]);
+          if (!seen)
+            list.push_back({normal[0], normal[1], normal[2], g});
+          continue;
+        }
+        dirichletNode[l] = 1;
+        double uD[3] = {0, 0, 0};
+        const double unusedNormal[3] = {0, 0, 0};  // u_D does not depend on the normal
+        bc->evaluate(&I.coords[3 * l], unusedNormal, d, data.exactSolution, uD);
+        for (int i = 0; i < d; ++i)
+          I.values_[l * d + i] = uD[i];
       }
-      double uD[3] = {0, 0, 0};
-      const double unusedNormal[3] = {0, 0, 0};  // u_D does not depend on the normal
-      bc->evaluate(&I.coords[3 * l], unusedNormal, d, data.exactSolution, uD);
+    }
+  for (const auto& [l, constraints] : frameNodes) {
+    // Least-squares projection u ← u + Σ_j λ_j n_j with (n_i·n_j) λ = g − N u, by Gram–Schmidt
+    // over the constraints (a constraint dependent on the earlier ones is skipped).
+    double* u = &I.values_[static_cast<std::size_t>(l) * d];
+    std::vector<std::array<double, 4>> basis;  // orthonormal directions q, with target q·u
+    for (const auto& c : constraints) {
+      double q[3] = {c[0], c[1], c[2]}, target = c[3];
+      for (const auto& b : basis) {
+        const double dot = q[0] * b[0] + q[1] * b[1] + q[2] * b[2];
+        for (int i = 0; i < 3; ++i)
+          q[i] -= dot * b[i];
+        target -= dot * b[3];
+      }
+      const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      if (norm < 1e-8)
+        continue;
+      basis.push_back({q[0] / norm, q[1] / norm, q[2] / norm, target / norm});
+    }
+    for (const auto& b : basis) {
+      double un = 0.0;
       for (int i = 0; i < d; ++i)
-        I.values_[l * d + i] = uD[i];
+        un += u[i] * b[i];
+      for (int i = 0; i < d; ++i)
+        u[i] += (b[3] - un) * b[i];
     }
   }
 }

@@ -127,9 +127,11 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
         continue;
       const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
       // Free faces: σ_h n = 0 exactly; contact faces: the contact contribution; Symmetry faces:
-      // the tangential rows are zero exactly and u^R·n = 0 at the face's nodes, hence on the
-      // (flat) face: nothing to measure.
-      if (!bc || bc->type == core::BoundaryType::Contact || bc->type == core::BoundaryType::Symmetry)
+      // the tangential components are zero exactly and u^R·n = 0 at the face's nodes, hence on
+      // the (flat) face: nothing to measure. Normal displacement faces: u^R·n = g at the nodes,
+      // so only the interpolation error of g, measured like a displacement's.
+      if (!bc || bc->type == core::BoundaryType::Contact || bc->type == core::BoundaryType::Symmetry ||
+          (bc->type == core::BoundaryType::NormalDisplacement && bc->isZero()))
         continue;
       if ((bc->type == core::BoundaryType::Traction || bc->type == core::BoundaryType::Pressure) &&
           bc->isZero())
@@ -145,6 +147,13 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
           rec.valueAt(e, x, u);
           for (int i = 0; i < d; ++i)
             osc += fv.weight(q) * twoMu / hF * std::pow(value[i] - u[i], 2);
+        } else if (bc->type == core::BoundaryType::NormalDisplacement) {
+          double u[3];
+          rec.valueAt(e, x, u);
+          double gap = 0.0;  // (g n − u^R)·n
+          for (int i = 0; i < d; ++i)
+            gap += (value[i] - u[i]) * fv.normal(q)[i];
+          osc += fv.weight(q) * twoMu / hF * gap * gap;
         } else {
           double sigma[9];
           sol.stress(fv, q, sigma);
