@@ -6,6 +6,8 @@
 
 #include <Teuchos_UnitTestHarness.hpp>
 
+#include <sc/core/Expression.hpp>
+
 #include "sc/core/Error.hpp"
 #include "sc/core/Parameters.hpp"
 #include "sc/core/ValueText.hpp"
@@ -26,6 +28,7 @@ ParameterList validList()
   ParameterList& bc = valid.sublist("Boundary Conditions").sublist(sc::core::kTemplateSublist);
   sc::core::declareChoice(bc, "Type", "Free", {"Displacement", "Free"}, "type");
   sc::core::declareRealArray(bc, "Value", Teuchos::Array<double>(), "value", {0, 2, 3});
+  sc::core::declareExpressionArray(bc, "Expression", "formulas", {0, 1, 2, 3});
   return valid;
 }
 
@@ -147,6 +150,15 @@ TEUCHOS_UNIT_TEST(Parameters, Overrides)
              sc::core::InputError);
   TEST_THROW(sc::core::applyOverride(user, valid, "Adaptivity/Cycles=two"), sc::core::InputError);
   TEST_THROW(sc::core::applyOverride(user, valid, "Material/Poisson ratio"), sc::core::InputError);
+  // Formulas (Array(string)) as the XML reader reads them: split at commas, in braces.
+  sc::core::applyOverride(user, valid, "Boundary Conditions/Top/Expression={0, -0.01*(1 + x^2)}");
+  sc::core::validateParameters(user, valid, "--set");
+  const auto formulas = user.sublist("Boundary Conditions").sublist("Top").get<Teuchos::Array<std::string>>("Expression");
+  TEST_EQUALITY(formulas.size(), 2);
+  TEST_EQUALITY(formulas[0], "0");
+  TEST_EQUALITY(formulas[1], "-0.01*(1 + x^2)");
+  TEST_THROW(sc::core::applyOverride(user, valid, "Boundary Conditions/Top/Expression=-0.01*x"),
+             sc::core::InputError);
 }
 
 TEUCHOS_UNIT_TEST(Parameters, ClosestMatch)

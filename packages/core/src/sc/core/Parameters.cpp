@@ -624,6 +624,15 @@ Teuchos::Array<double> parseDoubleArray(const std::string& text)
   return values;
 }
 
+// "{a, b}" as the XML reader reads an Array(string) (Teuchos splits at commas; formulas are
+// compiled, and their errors reported, when the deck is read).
+Teuchos::Array<std::string> parseStringArray(const std::string& text)
+{
+  const std::string why = checkArrayText(text, [](const std::string&) { return std::string(); });
+  SC_THROW_IF(!why.empty(), InputError, why);
+  return Teuchos::fromStringToArray<std::string>(trimmed(text));
+}
+
 // Besides Teuchos' checks: the deck is no directory, every number is parsed strictly
 // (checkValueText) and no key is given twice in one list.
 Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path)
@@ -735,6 +744,8 @@ void applyOverride(Teuchos::ParameterList& user, const Teuchos::ParameterList& v
       u->set(key, text);
     } else if (type == "Array(double)") {
       u->set(key, parseDoubleArray(text));
+    } else if (type == "Array(string)") {
+      u->set(key, parseStringArray(text));
     } else {
       SC_THROW_IF(true, InputError, "type " << type << " cannot be set from the command line");
     }
