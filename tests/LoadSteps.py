@@ -1,7 +1,7 @@
 """Load-step runs of the application (docs/theory.md "Load steps", docs/contact.md "Load steps").
 
     python3 LoadSteps.py --app stresscontact --ranks N --case CASE --deck DECK --out DIR
-                         [--set KEY=VALUE ...]
+                         [--set KEY=VALUE ...] [--kill-cycle K] [--set-checkpoint-int TOOL]
 
 Runs the deck on N ranks into DIR (emptied first) and checks its summary.json:
 
@@ -17,12 +17,26 @@ failed-step       the same deck with a Newton limit that step 1 meets and step 2
                   first cycle needs 7 steps): exit status 2, summary.json names the failed step
                   (failed_load_step = 2), says converged = false, and keeps every cycle of step 1
                   (history.csv too).
+restart           the shipped Cattaneo-Mindlin deck killed (SIGKILL, SC_KILL_IN_CYCLE = K) in
+                  cycle K, then `--restart` (docs/adaptivity.md "Checkpoint and restart"). K = 13,
+                  step 2's first cycle: the restart continues from the checkpoint of step 1's last
+                  cycle (12) and commits the friction history itself. The final P, Q and stick
+                  half-width must be the stored numbers of the uninterrupted run (to 1e-8, as
+                  above), with every check of cattaneo-mindlin; the summary names the checkpoint's
+                  cycle K - 1 and its load step, and has every cycle once, in its step.
+restart-errors    a short run of the deck (it leaves a checkpoint in step 2), then restarts that
+                  must be refused with exit status 1, a message naming the key, and the directory
+                  left as it was: other 'Load steps/Times' than the checkpoint's, and a
+                  checkpoint of the older format 3 (set by the tool --set-checkpoint-int; version
+                  3 kept neither the load step nor the friction history).
 """
 
 import argparse
+import hashlib
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -31,23 +45,101 @@ import sys
 STORED_CATTANEO = {"P": 147.59861012889849, "Q": 29.51683864909573, "stick": 0.05978696799024484}
 
 
-def run(args, expected_exit=0):
-    if os.path.isdir(args.out):
-        shutil.rmtree(args.out)
-    cmd = ["mpiexec", "-n", str(args.ranks), "--oversubscribe"]
-    if os.geteuid() == 0:
-        cmd.append("--allow-run-as-root")
-    cmd += [args.app, args.deck, "--output", args.out]
+def launch(args, extra, env=None, mpi=True):
+    """The app on args.ranks ranks with the deck, args.sets and `extra`: (exit status, output).
+    Without `mpi`, the app alone (one rank; an input error exits at once, where mpiexec takes
+    about 1.5 s to end the job)."""
+    cmd = []
+    if mpi:
+        cmd = ["mpiexec", "-n", str(args.ranks), "--oversubscribe"]
+        if os.geteuid() == 0:
+            cmd.append("--allow-run-as-root")
+    cmd += [args.app, args.deck] + extra
     for s in args.sets:
         cmd += ["--set", s]
     print(" ".join(cmd), flush=True)
-    result = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    result = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            env=None if env is None else {**os.environ, **env})
     print(result.stdout[-3000:])
-    if result.returncode != expected_exit:
-        print(f"FAILED: the run exited with {result.returncode}, expected {expected_exit}")
-        sys.exit(1)
-    with open(os.path.join(args.out, "summary.json")) as f:
+    return result.returncode, result.stdout
+
+
+def summary_of(directory):
+    with open(os.path.join(directory, "summary.json")) as f:
         return json.load(f)
+
+
+def run(args, expected_exit=0, extra=None, env=None, fresh=True):
+    if fresh and os.path.isdir(args.out):
+        shutil.rmtree(args.out)
+    rc, _ = launch(args, extra if extra is not None else ["--output", args.out], env)
+    if rc != expected_exit:
+        print(f"FAILED: the run exited with {rc}, expected {expected_exit}")
+        sys.exit(1)
+    return summary_of(args.out)
+
+
+def restart(args, checks):
+    """Killed in cycle args.kill_cycle, restarted; the checks of cattaneo_mindlin on the result."""
+    if os.path.isdir(args.out):
+        shutil.rmtree(args.out)
+    # (On one rank without mpiexec, which takes about 2 s to end a job whose process was killed.)
+    rc, _ = launch(args, ["--output", args.out, "--quiet"], {"SC_KILL_IN_CYCLE": str(args.kill_cycle)},
+                   mpi=args.ranks > 1)
+    checks.check(rc != 0 and os.path.exists(os.path.join(args.out, "checkpoint.h5")),
+                 f"the run killed in cycle {args.kill_cycle} exited with {rc} and left a checkpoint")
+    killed = summary_of(args.out)
+    checks.check(len(killed["cycles"]) == args.kill_cycle,
+                 f"the killed run's summary has the {args.kill_cycle} cycles before the kill "
+                 f"({len(killed['cycles'])})")
+    summary = run(args, 0, ["--restart", args.out], fresh=False)
+    record = summary.get("restart", {})
+    steps = [c["load_step"]["step"] for c in summary["cycles"]]
+    killed_step = [c["load_step"]["step"] for c in killed["cycles"]][-1]
+    checks.check(record.get("checkpoint_cycle") == args.kill_cycle - 1 and
+                 record.get("checkpoint_load_step") == killed_step,
+                 f"restarted from the checkpoint of cycle {args.kill_cycle - 1} in load step {killed_step}: {record}")
+    checks.check([c["cycle"] for c in summary["cycles"]] == list(range(len(steps))) and
+                 steps == sorted(steps) and set(steps) == {1, 2},
+                 f"every cycle once, in its load step: {steps}")
+    return summary
+
+
+def restart_errors(args, checks):
+    """Restarts that must be refused, on the checkpoint of a short run (left in step 2)."""
+    run(args, 0, ["--output", args.out, "--quiet"])
+
+    def state():
+        h = {}
+        for name in sorted(os.listdir(args.out)):
+            path = os.path.join(args.out, name)
+            if os.path.isfile(path) and name != "stresscontact.lock":
+                with open(path, "rb") as f:
+                    h[name] = hashlib.sha256(f.read()).hexdigest()
+        return h
+
+    before = state()
+    refusals = [
+        ("Load steps other than the checkpoint's", ["--restart", args.out, "--set", "Load steps/Times={1, 3}"],
+         r"the checkpoint '[^']*checkpoint\.h5' belongs to a run with other parameters: "
+         r"'Load steps/Times' is \[1\.0,2\.0\] in the checkpoint and \[1\.0,3\.0\] in this run"),
+    ]
+    older = args.out + "_format3"
+    if os.path.isdir(older):
+        shutil.rmtree(older)
+    shutil.copytree(args.out, older)
+    tool = subprocess.run([args.set_checkpoint_int, os.path.join(older, "checkpoint.h5"),
+                           "checkpoint_version", "3"])
+    checks.check(tool.returncode == 0, "a copy of the checkpoint set to version 3")
+    refusals.append(("a checkpoint of format 3", ["--restart", older],
+                     r"the checkpoint '[^']*_format3/checkpoint\.h5' has 'checkpoint_version' = 3; this build "
+                     r"reads version 4 \(from version 4 on the checkpoint keeps the load step and the contact "
+                     r"points' friction history\)"))
+    for what, extra, pattern in refusals:
+        rc, out = launch(args, extra + ["--quiet"], mpi=False)
+        checks.check(rc == 1 and re.search(pattern, out) is not None,
+                     f"{what}: exit status {rc} (1), the message matches {pattern!r}")
+    checks.check(state() == before, "the run's directory is left as it was")
 
 
 class Checks:
@@ -94,16 +186,23 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--app", required=True)
     parser.add_argument("--ranks", type=int, default=1)
-    parser.add_argument("--case", required=True, choices=["cattaneo-mindlin", "failed-step"])
+    parser.add_argument("--case", required=True,
+                        choices=["cattaneo-mindlin", "failed-step", "restart", "restart-errors"])
     parser.add_argument("--deck", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--set", action="append", default=[], dest="sets")
+    parser.add_argument("--kill-cycle", type=int, default=13)
+    parser.add_argument("--set-checkpoint-int", help="tests/tools/set_checkpoint_int (restart-errors)")
     args = parser.parse_args()
-    summary = run(args, 2 if args.case == "failed-step" else 0)
     checks = Checks()
-    if args.case == "cattaneo-mindlin":
-        cattaneo_mindlin(summary, 0.4, checks)
+    if args.case == "restart":
+        cattaneo_mindlin(restart(args, checks), 0.4, checks)
+    elif args.case == "restart-errors":
+        restart_errors(args, checks)
+    elif args.case == "cattaneo-mindlin":
+        cattaneo_mindlin(run(args), 0.4, checks)
     else:
+        summary = run(args, 2)
         steps = [c.get("load_step", {}).get("step") for c in summary["cycles"]]
         checks.check(summary.get("failed_load_step") == 2, f"failed_load_step = {summary.get('failed_load_step')} (2)")
         checks.check(summary.get("converged") is False, "converged = false")

@@ -694,8 +694,13 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
 
 void Simulation::checkpoint(int cycle, const adapt::Marking& marking)
 {
+  timedCheckpoint(cycle, marking.elements, false);
+}
+
+void Simulation::timedCheckpoint(int cycle, const std::vector<int>& marked, bool stepComplete)
+{
   const double start = Teuchos::Time::wallTime();
-  writeCheckpoint(cycle, marking.elements);
+  writeCheckpoint(cycle, marked, stepComplete);
   // Its time is known only after the summary record was written (and copied into the
   // checkpoint): summary.json has it from the next write on (the next cycle's, or the last).
   double seconds = Teuchos::Time::wallTime() - start, slowest = 0.0;
@@ -764,23 +769,36 @@ void Simulation::run()
     restoreOutputs();
 
   try {
-    loop_->run(*this, firstCycle, std::move(marked));
-    // Load steps after the first (docs/theory.md §"Load steps"): each from the last mesh and
-    // contact state of the step before, whose r_T becomes the friction history.
-    for (int step = 1; step < loadSteps_.numSteps(); ++step) {
-      applyLoadStep(step);
-      std::ostringstream os;
-      os << "load step " << step + 1 << " of " << loadSteps_.numSteps() << ", t = "
-         << loadSteps_.times[step];
-      progress_.message(os.str());
-      if (boundaryConditions_.hasContact()) {
+    // The load steps (docs/theory.md §"Load steps"), from the first, or from the checkpoint's
+    // (resume_): each step after the first starts from the last mesh and contact state of the
+    // step before, whose r_T becomes the friction history. A restart continues a step from the
+    // checkpoint's cycle, or starts the next step when the checkpoint is of a step's last cycle.
+    for (int step = resume_.step; step < loadSteps_.numSteps(); ++step) {
+      const bool continues = step == resume_.step && !resume_.startsStep;
+      if (step > 0) {
+        applyLoadStep(step);
+        std::ostringstream os;
+        os << "load step " << step + 1 << " of " << loadSteps_.numSteps() << ", t = "
+           << loadSteps_.times[step];
+        progress_.message(os.str());
+      }
+      if (step > 0 && !continues && boundaryConditions_.hasContact()) {
         contact::commitLoadStep(previousPoints_);
         // The same mesh: every contact face is its own parent.
         contactFaceParents_.assign(mesh_->numFaces(), -1);
         for (int f : mesh_->boundaryFaces())
           contactFaceParents_[f] = f;
       }
-      laterStepLoop_->run(*this, 0, {}, lastCycle_ + 1);
+      stepFirstCycle_ = continues ? resume_.stepFirstCycle : lastCycle_ + 1;
+      adapt::AdaptiveLoop& loop = step == 0 ? *loop_ : *laterStepLoop_;
+      if (continues)
+        loop.run(*this, firstCycle - stepFirstCycle_, std::move(marked), stepFirstCycle_);
+      else
+        loop.run(*this, 0, {}, stepFirstCycle_);
+      // The next step can start from here: a checkpoint of the step's last cycle (the loop
+      // writes none for the cycle it stops at).
+      if (step + 1 < loadSteps_.numSteps())
+        timedCheckpoint(lastCycle_, {}, true);
     }
     // A scene whose contact could not be solved is not "converged".
     summary_->setConverged(solved_);

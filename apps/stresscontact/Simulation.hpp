@@ -144,12 +144,17 @@ private:
 
   // Checkpoint/restart (SimulationCheckpoint.cpp; docs/adaptivity.md "Checkpoint and restart").
   /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5 with the
-  /// elements `marked` for the next cycle.
-  void writeCheckpoint(int cycle, const std::vector<int>& marked);
+  /// elements `marked` for the next cycle, the load step (loadStep_, stepFirstCycle_; with
+  /// `stepComplete` the cycle was the step's last, and the next cycle starts the next step) and
+  /// the contact points with their friction history.
+  void writeCheckpoint(int cycle, const std::vector<int>& marked, bool stepComplete);
   /// Collective, before anything is written: read the checkpoint of restartDirectory_, check it
   /// belongs to this deck, restore the refiner (mesh of its cycle), the marked elements (into
-  /// `marked`) and the contact state. Returns the cycle to continue with.
+  /// `marked`), the contact state and where the load steps go on (resume_). Returns the cycle to
+  /// continue with.
   int readCheckpoint(std::vector<int>& marked);
+  /// checkpoint(): the checkpoint written and its time put into the cycle's summary record.
+  void timedCheckpoint(int cycle, const std::vector<int>& marked, bool stepComplete);
   /// After the output directory is set up: the checkpoint's summary cycles and XDMF steps.
   void restoreOutputs();
   /// SC_KILL_IN_CYCLE (test only): kill the process in that cycle, after its fields are written.
@@ -172,6 +177,16 @@ private:
   core::BodyForce deckBodyForce_;
   contact::ContactSettings deckContact_;
   int loadStep_ = 0;
+  /// The (run-wide) number of the current load step's first cycle.
+  int stepFirstCycle_ = 0;
+  /// Where run() starts (a restart: the checkpoint's load step): the step, the number of its
+  /// first cycle, and whether the first cycle run starts that step (its friction history is
+  /// then committed from the previous step's state) or continues it.
+  struct Resume {
+    int step = 0;
+    int stepFirstCycle = 0;
+    bool startsStep = false;
+  } resume_;
   /// The loop of the load steps after the first (Load steps/Cycles per later step cycles).
   std::unique_ptr<adapt::AdaptiveLoop> laterStepLoop_;
   bool warnedNoContact_ = false;

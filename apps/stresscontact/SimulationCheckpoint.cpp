@@ -2,8 +2,12 @@
 // restart"). After every complete cycle N the run writes <output>/checkpoint.h5 (atomically):
 // the mesh of cycle N with the refiner's bisection state, the elements marked for cycle N+1, the
 // contact points of cycle N (the next cycle's start), the summary's cycle records, the XDMF
-// steps, and the run's parameters. `--restart DIR` reads it, checks the parameters, and goes on
-// with cycle N+1, which then refines, solves and writes as the uninterrupted run would have.
+// steps, the run's parameters, and the load step of cycle N (docs/theory.md §"Load steps") with
+// the contact points' friction history. Besides after every cycle that goes on, it is written
+// after the last cycle of every load step but the last, so that a run stopped after a step
+// continues with the next. `--restart DIR` reads it, checks the parameters, and goes on with
+// cycle N+1, which then refines (or, first in its load step, commits the friction history),
+// solves and writes as the uninterrupted run would have.
 #include "Simulation.hpp"
 
 #include <algorithm>
@@ -43,7 +47,15 @@ using Json = nlohmann::ordered_json;
 // Bumped when the content changes meaning; a checkpoint of another version is refused.
 // 3: a contact point's face by its vertices (face numbers of the initial mesh and of the same
 // mesh rebuilt from the refiner's state differ).
-constexpr long long kCheckpointVersion = 3;
+// 4: the load step of the cycle (load_step, load_step_time, load_step_first_cycle,
+// load_step_complete) and each contact point's weight, centroid, friction history, r_T and
+// tangents (what the next cycle's transfer and the next step's commit read).
+constexpr long long kCheckpointVersion = 4;
+
+// A contact point in the checkpoint (d = dimension): x (d), status, slip direction (2), index in
+// its face, the face's sorted vertices (d), weight, centroid (d), history (d), r_T (2), t1 (d),
+// t2 (d).
+int contactPointStride(int d) { return 6 * d + 7; }
 
 std::string checkpointPath(const std::string& directory)
 {
@@ -99,7 +111,7 @@ std::vector<T> narrow(const std::vector<long long>& v)
 
 }  // namespace
 
-void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
+void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool stepComplete)
 {
   // Timed by checkpoint() as the cycle's "checkpoint" phase, which summary.json shows from its next
   // write on (the checkpoint copies the cycle's record before its own time is known).
@@ -110,6 +122,10 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
   // its sorted vertices, which the restored mesh keeps: its face numbers are its own (the mesh
   // of cycle 0, straight from Gmsh, numbers its faces otherwise than the same mesh rebuilt from
   // the refiner's state, which made every contact run killed in cycle 1 unrestartable).
+  // With load steps a point also carries what friction on the slip increment needs: its history
+  // r_T^{n-1} with its weight and centroid (ActiveSetSolver::transferState places it on refined
+  // faces), and its r_T and tangents (contact::commitLoadStep makes them the next step's
+  // history). All exact doubles: the restarted run computes the same numbers.
   const int d = problem_.dimension;
   std::vector<double> mine;
   for (const auto& p : previousPoints_) {
@@ -121,6 +137,13 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
     std::vector<int> v(mesh_->faceVertices(p.face), mesh_->faceVertices(p.face) + d);
     std::sort(v.begin(), v.end());
     for (int x : v) mine.push_back(static_cast<double>(x));
+    mine.push_back(p.weight);
+    mine.insert(mine.end(), p.centroid.begin(), p.centroid.begin() + d);
+    mine.insert(mine.end(), p.history.begin(), p.history.begin() + d);
+    mine.push_back(p.rT[0]);
+    mine.push_back(p.rT[1]);
+    mine.insert(mine.end(), p.t1.begin(), p.t1.begin() + d);
+    mine.insert(mine.end(), p.t2.begin(), p.t2.begin() + d);
   }
   std::vector<double> points = core::gatherAllConcatenated(*comm_, mine);
 
@@ -132,6 +155,12 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
     cp.setString("parameters", io::toJson(*params_).dump());
     cp.setInts("ranks", {comm_->getSize()});
     cp.setInts("cycle", {cycle});
+    // The load step of this cycle (0-based), its time, the number of its first cycle, and
+    // whether this cycle was its last (the next cycle starts the next step).
+    cp.setInts("load_step", {loadStep_});
+    cp.setDoubles("load_step_time", {loadSteps_.times[loadStep_]});
+    cp.setInts("load_step_first_cycle", {stepFirstCycle_});
+    cp.setInts("load_step_complete", {stepComplete ? 1 : 0});
 
     const auto s = refiner_->state();
     cp.setInts("mesh_dimension", {s.dim});
@@ -150,7 +179,7 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
     cp.setInts("mesh_curved_edge_parts", {s.curvedEdgeParts.begin(), s.curvedEdgeParts.end()});
 
     cp.setInts("marked_elements", {marked.begin(), marked.end()});
-    cp.setInts("contact_point_stride", {2 * d + 4});
+    cp.setInts("contact_point_stride", {contactPointStride(d)});
     cp.setDoubles("contact_points", std::move(points));
 
     cp.setString("summary_cycles", summary_->json()["cycles"].dump());
@@ -165,14 +194,6 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked)
 
 int Simulation::readCheckpoint(std::vector<int>& marked)
 {
-  // The checkpoint holds neither the load step nor the friction history (docs/adaptivity.md
-  // "Checkpoint and restart"): a run with several load steps cannot be continued yet, and says
-  // so before anything is read or written.
-  SC_THROW_IF(loadSteps_.numSteps() > 1, core::InputError,
-              "--restart of a run with " << loadSteps_.numSteps()
-                  << " load steps ('Load steps/Times') is not available: the checkpoint does not "
-                     "keep the load step and the friction history. Run the deck again from the "
-                     "start.");
   const std::string path = checkpointPath(restartDirectory_);
   // A run killed in cycle 0 wrote no checkpoint (none is written before a cycle is complete) but
   // may have written that cycle's fields: nothing to continue, so the restart is the run itself,
@@ -207,8 +228,12 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     return v[0];
   };
   if (scalar("checkpoint_version") != kCheckpointVersion)
-    bad("has version " + std::to_string(scalar("checkpoint_version")) + "; this build reads version " +
-        std::to_string(kCheckpointVersion));
+    bad("has 'checkpoint_version' = " + std::to_string(scalar("checkpoint_version")) +
+        "; this build reads version " + std::to_string(kCheckpointVersion) +
+        (scalar("checkpoint_version") < 4 ? " (from version 4 on the checkpoint keeps the load step "
+                                            "and the contact points' friction history)"
+                                          : "") +
+        ": restart with the build that wrote it, or run the deck again from the start");
   if (cp.string("code_version") != versionString())
     bad("was written by StressContact " + cp.string("code_version") + ", this is " + versionString() +
         ": restart with the version that wrote it, or run the deck again");
@@ -228,6 +253,19 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   const int ranksBefore = static_cast<int>(scalar("ranks"));
   if (cycle < 0)
     bad("has a negative cycle (damaged)");
+  // The load step of that cycle. The deck's Load steps equal the checkpoint's (the parameters
+  // were compared above); the step and its time are checked against them all the same.
+  const int step = static_cast<int>(scalar("load_step"));
+  const int stepFirstCycle = static_cast<int>(scalar("load_step_first_cycle"));
+  const bool stepComplete = scalar("load_step_complete") != 0;
+  if (step < 0 || step >= loadSteps_.numSteps())
+    bad("is of load step " + std::to_string(step + 1) + ", but 'Load steps/Times' has " +
+        std::to_string(loadSteps_.numSteps()) + " step(s)");
+  if (cp.doubles("load_step_time").size() != 1 || cp.doubles("load_step_time")[0] != loadSteps_.times[step])
+    bad("is of load step " + std::to_string(step + 1) + " at another time than 'Load steps/Times' gives it");
+  if (stepFirstCycle < 0 || stepFirstCycle > cycle || (step == 0 && stepFirstCycle != 0) ||
+      (stepComplete && step + 1 >= loadSteps_.numSteps()))
+    bad("has load step records that do not fit together (damaged)");
 
   // The mesh of that cycle, with the state the refiner needs to go on exactly as before.
   mesh::BisectionRefiner::State s;
@@ -265,7 +303,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
 
   const int d = problem_.dimension;
   const auto& points = cp.doubles("contact_points");
-  const int stride = 2 * d + 4;
+  const int stride = contactPointStride(d);
   if (scalar("contact_point_stride") != stride || points.size() % stride != 0)
     bad("has contact points of another dimension (damaged)");
   // The restored mesh's boundary faces by their sorted vertices.
@@ -297,6 +335,16 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     p.direction = {points[k + d + 1], points[k + d + 2]};
     p.face = face->second;
     p.index = static_cast<int>(points[k + d + 3]);
+    std::size_t at = k + 2 * d + 4;
+    p.weight = points[at++];
+    for (auto* v : {&p.centroid, &p.history})
+      for (int i = 0; i < d; ++i)
+        (*v)[i] = points[at++];
+    p.rT = {points[at], points[at + 1]};
+    at += 2;
+    for (auto* v : {&p.t1, &p.t2})
+      for (int i = 0; i < d; ++i)
+        (*v)[i] = points[at++];
     previousPoints_.push_back(p);
   }
 
@@ -324,9 +372,18 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   symbolicReusesBefore_ = count("symbolic_reuses");
   preconditionerSetupsBefore_ = count("preconditioner_setups");
 
+  // Where the load steps go on: the next step from its start, or this step from cycle + 1.
+  resume_.step = stepComplete ? step + 1 : step;
+  resume_.stepFirstCycle = stepComplete ? cycle + 1 : stepFirstCycle;
+  resume_.startsStep = stepComplete;
+  lastCycle_ = cycle;
+
   std::ostringstream os;
   os << "restart from " << path << ": cycle " << cycle << " complete (" << mesh_->numElements()
      << " elements, " << marked.size() << " marked), continuing with cycle " << cycle + 1;
+  if (loadSteps_.numSteps() > 1)
+    os << (stepComplete ? ", which starts load step " : " in load step ") << resume_.step + 1 << " of "
+       << loadSteps_.numSteps();
   if (ranksBefore != comm_->getSize())
     os << "; written on " << ranksBefore << " rank(s), now " << comm_->getSize()
        << ": the cycles after it match a run on " << comm_->getSize()
@@ -343,6 +400,8 @@ void Simulation::restoreOutputs()
   summary_->json()["cycles"] = std::move(cycles);
   summary_->json()["restart"] = {{"checkpoint_cycle", cycle},
                                  {"ranks_before", cp.ints("ranks")[0]}};
+  if (loadSteps_.given)  // the load step of the checkpoint's cycle (1-based, as load_step/step)
+    summary_->json()["restart"]["checkpoint_load_step"] = cp.ints("load_step")[0] + 1;
   if (writer_) {
     std::vector<io::XdmfWriter::Step> steps;
     for (const auto& s : Json::parse(cp.string("xdmf_steps")))
