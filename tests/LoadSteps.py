@@ -32,6 +32,7 @@ restart-errors    a short run of the deck (it leaves a checkpoint in step 2), th
 """
 
 import argparse
+import csv
 import hashlib
 import json
 import math
@@ -156,7 +157,19 @@ def last_of_step(summary, step):
     return cycles[-1] if cycles else None
 
 
-def cattaneo_mindlin(summary, mu, checks):
+def stick_zone_from_csv(directory, cycle):
+    """The stick zone's ends along x from contact_cycle<cycle>.csv as summary.json defines them:
+    midway between the outermost stick point and the nearest other point beyond it."""
+    with open(os.path.join(directory, f"contact_cycle{cycle}.csv")) as f:
+        rows = list(csv.DictReader(f))
+    stick = [float(r["x"]) for r in rows if r["status"] == "stick"]
+    other = [float(r["x"]) for r in rows if r["status"] != "stick"]
+    lo, hi = min(stick), max(stick)
+    below, above = [x for x in other if x < lo], [x for x in other if x > hi]
+    return [0.5 * (lo + max(below)) if below else lo, 0.5 * (hi + min(above)) if above else hi]
+
+
+def cattaneo_mindlin(summary, mu, checks, directory):
     first, second = last_of_step(summary, 1), last_of_step(summary, 2)
     checks.check(summary.get("converged") is True, "the run converged")
     checks.check(first is not None and second is not None, "summary.json has cycles of steps 1 and 2")
@@ -176,6 +189,11 @@ def cattaneo_mindlin(summary, mu, checks):
     checks.check(c < first["contact"]["stick_half_width"], "the stick zone shrinks in step 2")
     checks.check(abs(c / a - johnson) <= 0.03, f"c/a = {c / a:.4f} against Johnson {johnson:.4f} (+- 0.03)")
     checks.check(abs((ends[1] - ends[0]) / 2 - c) <= 1e-12 * a, "stick_zone_ends span 2 stick_half_width")
+    # Where the zone is (it once came out mirrored about its centre): the stick points of the
+    # contact CSV (the obstacle normal is (0, 1), so the plane's coordinate is x).
+    csv_ends = stick_zone_from_csv(directory, second["cycle"])
+    checks.check(all(abs(e - r) <= 1e-12 * a for e, r in zip(ends, csv_ends)),
+                 f"stick_zone_ends {ends} are those of the contact CSV's stick points {csv_ends} (1e-12 a)")
     for key, value in (("P", P), ("Q", Q), ("stick", c)):
         stored = STORED_CATTANEO[key]
         checks.check(abs(value - stored) <= 1e-8 * abs(stored),
@@ -196,11 +214,11 @@ def main():
     args = parser.parse_args()
     checks = Checks()
     if args.case == "restart":
-        cattaneo_mindlin(restart(args, checks), 0.4, checks)
+        cattaneo_mindlin(restart(args, checks), 0.4, checks, args.out)
     elif args.case == "restart-errors":
         restart_errors(args, checks)
     elif args.case == "cattaneo-mindlin":
-        cattaneo_mindlin(run(args), 0.4, checks)
+        cattaneo_mindlin(run(args), 0.4, checks, args.out)
     else:
         summary = run(args, 2)
         steps = [c.get("load_step", {}).get("step") for c in summary["cycles"]]

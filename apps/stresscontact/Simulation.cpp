@@ -681,8 +681,14 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
     if (!loadSteps_.obstacleDisplacement.empty())
       prescribed["obstacle"] = loadSteps_.obstacleDisplacementAt(loadStep_, problem_.dimension);
     if (results_->contact && problem_.dimension == 2) {
+      // The ends as coordinates along the plane's direction τ = (ν_y, −ν_x) (x for ν = (0, 1)):
+      // the summary's ends are signed coordinates s along −τ = (−ν_y, ν_x) from the zone's
+      // centre, so the end at s lies at centre·τ − s. (Taken as centre_x + s before, which
+      // mirrored the zone about its centre.)
       const auto& cs = results_->contact->summary;
-      c["contact"]["stick_zone_ends"] = {cs.center[0] + cs.stickZoneEnds[0], cs.center[0] + cs.stickZoneEnds[1]};
+      const auto& nu = contact_.obstacleNormal;
+      const double centre = cs.center[0] * nu[1] - cs.center[1] * nu[0];
+      c["contact"]["stick_zone_ends"] = {centre - cs.stickZoneEnds[1], centre - cs.stickZoneEnds[0]};
     }
   }
   const auto timings = timers_.cycleTimings();
