@@ -21,6 +21,13 @@ Reads only what the run wrote (docs/output.md): summary.json, contact_cycle<N>.c
                        displacement u^R, magnified by the scale factor given in the title (largest
                        |u^R| = 5% of the body's size, or --scale), coloured by von Mises; with
                        contact a second panel shows the contact zone at true scale.
+  load_history.png     (runs with load steps) from history.csv, the last cycle of each step: the
+                       force on each support part and on the obstacle against the prescribed
+                       displacement that changes from step to step (the part's reaction against
+                       its own prescribed component, the contact force against the obstacle's
+                       displacement), every force component against the step's time, and the
+                       contact and stick zone's size against the time, in 2D with the stick
+                       zone's ends (summary.json's contact.stick_zone_ends) as a band.
 
 As a module (importlib, see docs/adaptivity/hertz2d_study.py) it offers the readers and the
 Hertz reference from the run's own parameters (hertz_reference) to the docs' study scripts.
@@ -257,6 +264,131 @@ def plot_contact(summary, directory, cycle, plt, out, name="contact_traction.png
     return path
 
 
+def read_history(directory):
+    """history.csv as a list of rows (column -> float, None for an empty cell), or None."""
+    path = os.path.join(directory, "history.csv")
+    if not os.path.exists(path):
+        return None
+    with open(path, newline="", encoding="utf-8") as f:
+        return [{k: (float(v) if v not in ("", None) else None) for k, v in row.items()}
+                for row in csv.DictReader(f)]
+
+
+def plot_load_history(summary, directory, plt, out, name="load_history.png"):
+    """load_history.png for a run with load steps (history.csv's step column), else None."""
+    rows = read_history(directory)
+    if not rows or "step" not in rows[0]:
+        return None
+    # The last cycle of each step: the step's result on its final mesh.
+    last = {}
+    for r in rows:
+        if r["step"] is not None:
+            last[int(r["step"])] = r
+    steps = [last[k] for k in sorted(last)]
+    if not steps:
+        return None
+    dim = param(summary, "Problem", "Dimension", default=2)
+    axes_names = "xyz"[:dim]
+    times = [r["time"] for r in steps]
+    columns = list(rows[0].keys())
+    reactions = [c for c in columns if c.startswith("reaction_")]
+    contact = "force_x" in columns
+
+    # Force against prescribed displacement: each tabulated component that changes over the
+    # steps, with the force of the same part and direction (a Displacement part's reaction, the
+    # contact force for the obstacle's displacement).
+    pairs = []
+    for c in columns:
+        m = re.fullmatch(r"prescribed_(.+)_(\d+)", c)
+        if not m:
+            continue
+        values = [r[c] for r in steps]
+        if None in values or max(values) == min(values):
+            continue
+        part, i = m.group(1), int(m.group(2))
+        if i >= dim:
+            continue
+        force = "force_" + axes_names[i] if part == "obstacle" else f"reaction_{part}_{axes_names[i]}"
+        if force in columns and param(summary, "Boundary Conditions", part, "Type",
+                                      default="Displacement" if part == "obstacle" else None) == "Displacement":
+            pairs.append((c, force, part, axes_names[i]))
+
+    panels = (1 if pairs else 0) + 1 + (1 if contact else 0)
+    fig, axs = plt.subplots(1, panels, figsize=(5.2 * panels, 4.4), squeeze=False)
+    axs = list(axs[0])
+    markers = dict(marker="o", ms=5)
+
+    def step_ticks(ax, xs):
+        # One distinct time: a range around it (matplotlib warns about an empty one).
+        if max(xs) == min(xs):
+            ax.set_xlim(xs[0] - 0.5, xs[0] + 0.5)
+
+    if pairs:
+        ax = axs.pop(0)
+        for c, force, part, axis in pairs:
+            xs = [r[c] for r in steps]
+            ys = [r[force] for r in steps]
+            label = (f"contact force {axis} against the obstacle's displacement {axis}" if part == "obstacle"
+                     else f"reaction of {part}, {axis}, against its prescribed {axis}")
+            ax.plot(xs, ys, "-", label=label, **markers)
+            for k, (x, y) in enumerate(zip(xs, ys)):
+                ax.annotate(f"step {int(steps[k]['step'])}", (x, y), textcoords="offset points",
+                            xytext=(4, -12), fontsize=7)
+        ax.set_xlabel("prescribed displacement")
+        ax.set_ylabel("force on the body")
+        ax.set_title("force against prescribed displacement")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+
+    ax = axs.pop(0)
+    if contact:
+        for a in axes_names:
+            ax.plot(times, [r["force_" + a] for r in steps], "-", label=f"contact force {a}", **markers)
+    for c in reactions:
+        part_axis = c[len("reaction_"):]
+        ax.plot(times, [r[c] for r in steps], "--", label=f"reaction {part_axis[:-2]} {part_axis[-1]}", **markers)
+    step_ticks(ax, times)
+    ax.set_xlabel("time t (Load steps/Times)")
+    ax.set_ylabel("force on the body")
+    ax.set_title("forces against time (last cycle of each step)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+
+    if contact:
+        ax = axs.pop(0)
+        zone = "half_width" if dim == 2 else "radius"
+        ax.plot(times, [r[zone] for r in steps], "-", color="0.3", label=f"contact zone ({zone.replace('_', '-')})", **markers)
+        ax.plot(times, [r["stick_" + zone] for r in steps], "-", color="tab:red",
+                label=f"stick zone ({zone.replace('_', '-')})", **markers)
+        if dim == 2:
+            ends = {}
+            for c in summary.get("cycles", []):
+                e = c.get("contact", {}).get("stick_zone_ends") if isinstance(c.get("contact"), dict) else None
+                step = c.get("load_step", {}).get("step")
+                if e and step is not None:
+                    ends[int(step)] = e
+            band = [ends.get(int(r["step"])) for r in steps]
+            if all(band) and any(b[1] > b[0] for b in band):  # (no band without stick points)
+                ax.fill_between(times, [b[0] for b in band], [b[1] for b in band], color="tab:red", alpha=0.15,
+                                label="stick zone: its ends along the plane")
+                ax.axhline(0.0, color="0.6", lw=0.8)
+        step_ticks(ax, times)
+        ax.set_xlabel("time t (Load steps/Times)")
+        ax.set_ylabel("length")
+        ax.set_title("contact and stick zone against time")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+
+    name_of_run = param(summary, "Problem", "Name", default="")
+    if name_of_run:
+        fig.suptitle(name_of_run, fontsize=9)
+    fig.tight_layout()
+    path = os.path.join(out, name)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def xdmf_step(directory, summary, cycle):
     """(h5 path, topology path, geometry path, eta path or None) of the domain grid of a cycle
     (the last step when cycle is None), read from the .xdmf."""
@@ -448,7 +580,8 @@ def main():
     written = [p for p in (plot_eta(summary, plt, out),
                            plot_contact(summary, args.output_dir, args.cycle, plt, out),
                            plot_mesh(summary, args.output_dir, args.cycle, plt, out),
-                           plot_deformed(summary, args.output_dir, args.cycle, plt, out, args.scale)) if p]
+                           plot_deformed(summary, args.output_dir, args.cycle, plt, out, args.scale),
+                           plot_load_history(summary, args.output_dir, plt, out)) if p]
     for p in written:
         print("wrote", p)
     return 0 if written else 1
