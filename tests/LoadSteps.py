@@ -92,10 +92,10 @@ def summary_of(directory):
         return json.load(f)
 
 
-def run(args, expected_exit=0, extra=None, env=None, fresh=True):
+def run(args, expected_exit=0, extra=None, env=None, fresh=True, mpi=True):
     if fresh and os.path.isdir(args.out):
         shutil.rmtree(args.out)
-    rc, _ = launch(args, extra if extra is not None else ["--output", args.out], env)
+    rc, _ = launch(args, extra if extra is not None else ["--output", args.out], env, mpi)
     if rc != expected_exit:
         print(f"FAILED: the run exited with {rc}, expected {expected_exit}")
         sys.exit(1)
@@ -106,7 +106,8 @@ def restart(args, checks):
     """Killed in cycle args.kill_cycle, restarted; the checks of cattaneo_mindlin on the result."""
     if os.path.isdir(args.out):
         shutil.rmtree(args.out)
-    # (On one rank without mpiexec, which takes about 2 s to end a job whose process was killed.)
+    # (On one rank without mpiexec, which takes about 2 s to end a job whose process was killed;
+    # the restart too.)
     rc, _ = launch(args, ["--output", args.out, "--quiet"], {"SC_KILL_IN_CYCLE": str(args.kill_cycle)},
                    mpi=args.ranks > 1)
     checks.check(rc != 0 and os.path.exists(os.path.join(args.out, "checkpoint.h5")),
@@ -115,7 +116,7 @@ def restart(args, checks):
     checks.check(len(killed["cycles"]) == args.kill_cycle,
                  f"the killed run's summary has the {args.kill_cycle} cycles before the kill "
                  f"({len(killed['cycles'])})")
-    summary = run(args, 0, ["--restart", args.out], fresh=False)
+    summary = run(args, 0, ["--restart", args.out], fresh=False, mpi=args.ranks > 1)
     record = summary.get("restart", {})
     steps = [c["load_step"]["step"] for c in summary["cycles"]]
     killed_step = [c["load_step"]["step"] for c in killed["cycles"]][-1]
