@@ -32,6 +32,18 @@ mindlin-deresiewicz  input/mindlin_deresiewicz2d.xml: pressed (step 1), moved si
                   tractions locked in by pressing (docs/contact.md "Load steps"), which move the
                   loading step's zone by +0.034 on this mesh and the full reversal's by -0.039.
                   Stored: Q of steps 3 and 4 and their stick half-widths (1 rank, 2026-12-03), 1e-8.
+incremental       input/hertz2d_incremental.xml (the Hertz half disc of input/hertz2d.xml, nu = 0.28,
+                  mu_F = 0.4, on one fixed mesh) pressed by 0.01 t in N equal load steps, for each
+                  N of --steps. One step is the static problem: its stick ratio c/a within 0.02 of
+                  the converged static value 0.46 (docs/contact.md "Which 2D stick ratio to
+                  trust"; 0.02 a is about the point spacing here). Several steps give the
+                  incremental (path-dependent) answer, whose limit N -> infinity is Spence's
+                  self-similar solution (Spence 1975); no value of it with a named source was
+                  available, so the checks are: c/a at least 0.3 above the one-step value for
+                  N >= 5 (measured 0.85-0.92 against 0.455), P within 0.5% of the one-step P, and
+                  with three or more N >= 5 the area-based ratio growing with N by shrinking
+                  differences (measured 0.848, 0.900, 0.920 for N = 5, 20, 40). Stored: the final P
+                  and stick half-width of each N (1 rank, 2026-12-03), 1e-8.
 failed-step       the same deck with a Newton limit that step 1 meets and step 2 does not (its
                   first cycle needs 7 steps): exit status 2, summary.json names the failed step
                   (failed_load_step = 2), says converged = false, and keeps every cycle of step 1
@@ -63,6 +75,9 @@ import sys
 
 # The final cycle of the shipped deck on 1 rank (stored; every rank count must give them).
 STORED_CATTANEO = {"P": 147.59861012889849, "Q": 29.51683864909573, "stick": 0.05978696799024484}
+# The last cycle of input/hertz2d_incremental.xml in N steps on 1 rank (stored): P, stick half-width.
+STORED_INCREMENTAL = {1: (108.07925045270595, 0.03450760522768301), 5: (107.84003023957762, 0.06514780158984862),
+                      20: (107.81766384887045, 0.07126940503815328), 40: (107.81531776046484, 0.07126940503815328)}
 # The last cycles of steps 3 and 4 of input/mindlin_deresiewicz2d.xml on 1 rank (stored).
 STORED_MINDLIN_DERESIEWICZ = {"Q3": 14.404558708915848, "stick3": 0.07738832523363989,
                               "Q4": -29.63533749371656, "stick4": 0.05519472483225169}
@@ -322,13 +337,49 @@ def mindlin_deresiewicz(summary, out, mu, E, nu, checks):
         checks.check(abs(value - stored) <= 1e-8 * abs(stored), f"{key} = {value!r} against the stored {stored!r} (1e-8)")
 
 
+def incremental(args, checks):
+    """input/hertz2d_incremental.xml in N equal steps for each N of args.steps (see the top)."""
+    results = {}
+    base = args.out
+    for n in args.steps:
+        times = ", ".join(f"{k / n:.12g}" for k in range(1, n + 1))
+        args.out = os.path.join(base, f"steps{n}")
+        summary = run(args, extra=["--output", args.out, "--set", f"Load steps/Times={{{times}}}"])
+        last = summary["cycles"][-1]
+        checks.check(summary.get("converged") is True and last["load_step"]["step"] == n,
+                     f"N = {n}: converged, {n} steps")
+        k = last["contact"]
+        results[n] = (k["force"][1], k["stick_half_width"] / k["half_width"],
+                      k["equivalent_stick_half_width"] / k["equivalent_half_width"])
+        steps_newton = [c["contact"]["newton_iterations"] for c in summary["cycles"]]
+        print(f"N = {n}: P = {k['force'][1]!r}, c/a = {results[n][1]:.4f} (outermost points), "
+              f"{results[n][2]:.4f} (areas); Newton steps {steps_newton}")
+        stored = STORED_INCREMENTAL.get(n)
+        if stored is not None:
+            for name, value, ref in (("P", k["force"][1], stored[0]), ("stick half-width", k["stick_half_width"], stored[1])):
+                checks.check(abs(value - ref) <= 1e-8 * abs(ref), f"N = {n}: {name} = {value!r} against the stored {ref!r} (1e-8)")
+    args.out = base
+    if 1 in results:
+        checks.check(abs(results[1][1] - 0.46) <= 0.02, f"N = 1: c/a = {results[1][1]:.4f} against the static 0.46 (+- 0.02)")
+        for n, (P, ratio, _) in results.items():
+            if n >= 5:
+                checks.check(ratio >= results[1][1] + 0.3, f"N = {n}: c/a = {ratio:.4f} at least 0.3 above one step's {results[1][1]:.4f}")
+                checks.check(abs(P / results[1][0] - 1.0) <= 0.005, f"N = {n}: P/P(N = 1) - 1 = {P / results[1][0] - 1.0:.2e} (<= 5e-3)")
+    many = sorted(n for n in results if n >= 5)
+    for n0, n1, n2 in zip(many, many[1:], many[2:]):
+        d1, d2 = results[n1][2] - results[n0][2], results[n2][2] - results[n1][2]
+        checks.check(0.0 < d2 < d1, f"area-based c/a grows with N by shrinking differences: N = {n0} -> {n1}: {d1:+.4f}, "
+                     f"{n1} -> {n2}: {d2:+.4f}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--app", required=True)
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--case", required=True,
-                        choices=["cattaneo-mindlin", "mindlin-deresiewicz", "failed-step", "restart",
-                                 "restart-errors"])
+                        choices=["cattaneo-mindlin", "mindlin-deresiewicz", "incremental", "failed-step",
+                                 "restart", "restart-errors"])
+    parser.add_argument("--steps", type=int, action="append", default=[], help="incremental: a number of steps N")
     parser.add_argument("--deck", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--set", action="append", default=[], dest="sets")
@@ -342,6 +393,10 @@ def main():
         restart_errors(args, checks)
     elif args.case == "cattaneo-mindlin":
         cattaneo_mindlin(run(args), 0.4, checks, args.out)
+    elif args.case == "incremental":
+        if os.path.isdir(args.out):
+            shutil.rmtree(args.out)
+        incremental(args, checks)
     elif args.case == "mindlin-deresiewicz":
         mindlin_deresiewicz(run(args), args.out, 0.4, 20600.0, 0.4999, checks)
     else:
