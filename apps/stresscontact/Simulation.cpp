@@ -64,6 +64,7 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
 {
   problem_ = core::ProblemSettings::fromParameters(params_->sublist("Problem"));
   const int dim = problem_.dimension;
+  meshSettings_ = mesh::MeshSettings::fromParameters(params_->sublist("Mesh"));
   material_ = core::Material::fromParameters(params_->sublist("Material"), dim);
   boundaryConditions_ =
       core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
@@ -80,11 +81,9 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   }
   // The frictionless Hertz scenes are compared with Hertz's values for their computed load
   // (contact::compareWithHertz).
-  if (const auto& meshList = params_->sublist("Mesh");
-      boundaryConditions_.hasContact() && !contact_.needsFriction() &&
-      (meshList.get<std::string>("Source") == "Half disc" ||
-       meshList.get<std::string>("Source") == "Half ball"))
-    hertzRadius_ = meshList.get<double>("Radius");
+  if (boundaryConditions_.hasContact() && !contact_.needsFriction() &&
+      (meshSettings_.source == "Half disc" || meshSettings_.source == "Half ball"))
+    hertzRadius_ = meshSettings_.radius;
   discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
   if (boundaryConditions_.hasContact())
     contact::checkContactDegree(dim, discretization_.degree);
@@ -202,11 +201,11 @@ void Simulation::setupMesh()
   double baseline = 0.0;
   Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, mesh::residentMemoryBytes(),
                                   Teuchos::outArg(baseline));
-  limit_ = mesh::makeResourceLimit(params_->sublist("Mesh").get<double>("Memory limit (GB)"),
+  limit_ = mesh::makeResourceLimit(meshSettings_.memoryLimitGB,
                                    problem_.dimension, discretization_.degree, comm_->getSize(),
                                    adaptivity_.maxDofs, available, source, baseline);
   // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
-  refiner_ = mesh::MeshFactory::build(params_->sublist("Mesh"), problem_.dimension, *comm_,
+  refiner_ = mesh::MeshFactory::build(meshSettings_, problem_.dimension, *comm_,
                                       /*splitBoundarySimplices=*/false, limit_);
   mesh_ = refiner_->mesh();
   if (hierarchy_)
@@ -215,7 +214,7 @@ void Simulation::setupMesh()
   // scenes' contact boundary; a Gmsh geometry's or a quadratic file's curved parts). Known once
   // the geometry is, which for a Gmsh file is after reading it.
   if (boundaryConditions_.hasContact() &&
-      mesh::MeshFactory::hasCurvedElements(params_->sublist("Mesh"), *refiner_))
+      mesh::MeshFactory::hasCurvedElements(meshSettings_, *refiner_))
     contact::checkCurvedContact(problem_.dimension, discretization_.degree, contact_.frame);
   // How faithful the domain is (a linear file's curved part is its polygon, and stays so).
   if (const auto geometry = refiner_->geometry(); !geometry.is_null() && !geometry->warning().empty()) {
@@ -224,7 +223,7 @@ void Simulation::setupMesh()
       std::cerr << "stresscontact: warning: " << geometry->warning() << std::endl;
   }
   boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
-                                         params_->sublist("Mesh").get<std::string>("Source"));
+                                         meshSettings_.source);
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
   // A plane obstacle may hold the body along its normal, when nothing else does.
   assembly::ContactPlane plane;
@@ -238,9 +237,9 @@ void Simulation::setupMesh()
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
   if (std::any_of(boundaryConditions_.conditions.begin(), boundaryConditions_.conditions.end(),
                   [](const auto& c) { return c.inNormalFrame(); }) &&
-      mesh::MeshFactory::hasCurvedElements(params_->sublist("Mesh"), *refiner_))
+      mesh::MeshFactory::hasCurvedElements(meshSettings_, *refiner_))
     assembly::checkNormalFramePartsFlat(
-        *mesh_, boundaryConditions_, *mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_));
+        *mesh_, boundaryConditions_, *mesh::MeshFactory::curvedElements(meshSettings_, *refiner_));
   if (boundaryConditions_.hasContact()) {
     // Every load step's obstacle position, before anything is written (a step that moves the
     // obstacle off the body, or too deep into it, is an input error of the deck).
@@ -351,7 +350,7 @@ void Simulation::setupElasticity()
   Teuchos::RCP<const mesh::CurvedElements> curved;
   {
     auto t = timers_.scope("setup");
-    curved = mesh::MeshFactory::curvedElements(params_->sublist("Mesh"), *refiner_);
+    curved = mesh::MeshFactory::curvedElements(meshSettings_, *refiner_);
   }
   // The pipeline shared with the tests and benchmarks: METIS partition ("partition" phase), DOF
   // numbering and the assembler's graph ("setup").
@@ -423,7 +422,7 @@ void Simulation::solveContact()
     auto t = timers_.scope("contact setup");
     contactSolver_ = std::make_unique<contact::ActiveSetSolver>(
         *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
-        params_->sublist("Contact").sublist("Newton"), comm_);
+        comm_);
     contactSolver_->setContactHoldsBody(contactHoldsBody_);
   }
   {

@@ -29,6 +29,7 @@
 #include <sc/core/Timers.hpp>
 #include <sc/estimator/EstimatorSettings.hpp>
 #include <sc/io/OutputSettings.hpp>
+#include <sc/mesh/MeshSettings.hpp>
 #include <sc/mesh/ResourceEstimate.hpp>
 
 namespace sc::mesh {
@@ -166,6 +167,7 @@ private:
 
   // Scene data and method settings (read once, in the constructor).
   core::ProblemSettings problem_;
+  mesh::MeshSettings meshSettings_;
   core::Material material_;
   core::BoundaryConditions boundaryConditions_;  ///< of the current load step
   core::BodyForce bodyForce_;  ///< "Body Force" (f = 0 when not given), of the current load step

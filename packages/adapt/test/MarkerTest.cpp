@@ -155,7 +155,7 @@ TEUCHOS_UNIT_TEST(Estimator, YoungModulusScalesEveryPartAndKeepsTheMarking)
     sc::test::solveVerification(s, comm, [&](int, const sc::assembly::MixedElasticityAssembler& A,
                                              const Tpetra::MultiVector<>& x,
                                              const sc::assembly::ElasticityData& data) {
-      sc::estimator::ErrorEstimator estimator(A, sc::estimator::EstimatorSettings(), comm);
+      sc::estimator::ErrorEstimator estimator(A, sc::estimator::EstimatorSettings{true}, comm);
       estimates.push_back(estimator.estimate(x, data));
       sc::adapt::DorflerMarker dorfler(0.5);
       marked.push_back(dorfler.mark(A.space().mesh().numElements(), A.space().ownedElements(),

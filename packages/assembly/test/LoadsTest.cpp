@@ -254,6 +254,7 @@ sc::core::BodyForce readBodyForce(Teuchos::ParameterList list)
   sc::core::validateParameters(deck, valid, "test");
   sc::core::ProblemSettings problem;
   problem.dimension = 2;
+  problem.exactSolution = "None";
   return sc::core::BodyForce::fromParameters(deck.sublist("Body Force"), problem);
 }
 

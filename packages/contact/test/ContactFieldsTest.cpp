@@ -27,6 +27,8 @@
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 
+#include "ContactTestSettings.hpp"
+
 namespace {
 
 struct Case {
@@ -55,13 +57,13 @@ void checkPointValues(const Case& c, Teuchos::FancyOStream& out, bool& success)
   bcs.conditions.push_back({contactName, sc::core::BoundaryType::Contact, {}, false});
   const sc::core::Material material{2.5, 0.25};
   system.assemble({material, bcs, nullptr});
-  sc::contact::ContactSettings cs;
+  sc::contact::ContactSettings cs = sc::contact::testing::defaultContactSettings();
   cs.obstaclePoint.assign(d, 0.0);
   cs.obstacleNormal.assign(d, 0.0);
   cs.obstacleNormal[d - 1] = 1.0;
   cs.frictionLaw = sc::contact::FrictionLaw::Coulomb;
   cs.frictionCoefficient = 0.4;
-  sc::contact::ActiveSetSolver contact(space, cs, material, {contactName}, Teuchos::ParameterList(), comm);
+  sc::contact::ActiveSetSolver contact(space, cs, material, {contactName}, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", std::string("MUMPS"));
   auto solver = sc::solvers::createLinearSolver(solverList);

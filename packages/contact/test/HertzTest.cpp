@@ -28,6 +28,10 @@
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include "ContactTestSettings.hpp"
+
+using sc::contact::testing::defaultContactSettings;
+
 namespace {
 
 struct HertzCase {
@@ -90,7 +94,7 @@ HertzResult solveHertz(const HertzCase& h)
   bcs.conditions.push_back({contactName, sc::core::BoundaryType::Contact, {}, false});
   sc::core::Material material{h.E, h.nu};
   system.assemble({material, bcs, nullptr});
-  sc::contact::ContactSettings cs;
+  sc::contact::ContactSettings cs = defaultContactSettings();
   cs.obstaclePoint.assign(d, 0.0);
   cs.obstaclePoint[d - 1] = h.obstacleHeight;
   cs.frame = h.frame;
@@ -100,8 +104,9 @@ HertzResult solveHertz(const HertzCase& h)
   cs.frictionCoefficient = h.mu;
   Teuchos::ParameterList newton;
   if (!h.coulombMethod.empty()) newton.set("Coulomb method", h.coulombMethod);
+  cs.newton = sc::contact::NewtonSettings::fromUncheckedParameters(newton);
   sc::contact::checkObstacle(*m, cs, {contactName});
-  sc::contact::ActiveSetSolver contact(space, cs, material, {contactName}, newton, comm);
+  sc::contact::ActiveSetSolver contact(space, cs, material, {contactName}, comm);
   Teuchos::ParameterList solverList;
   solverList.set("Type", h.solver);
   auto solver = sc::solvers::createLinearSolver(solverList);
@@ -506,7 +511,7 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
     sc::core::BoundaryConditions bcs;
     bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, {0.0, -0.01}, false});
     bcs.conditions.push_back({"Arc", sc::core::BoundaryType::Contact, {}, false});
-    sc::contact::ContactSettings cs;
+    sc::contact::ContactSettings cs = defaultContactSettings();
     cs.obstaclePoint = {0.0, 0.0};
     cs.obstacleNormal = {0.0, 1.0};
     cs.frictionLaw = sc::contact::FrictionLaw::Coulomb;
@@ -521,8 +526,7 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
                        const std::vector<int>* parents, bool solve = true) {
       sc::assembly::MixedElasticitySystem system(m, degree, comm);
       system.assemble({material, bcs, nullptr});
-      Teuchos::ParameterList newton;
-      sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, newton, comm);
+      sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, comm);
       if (previous)
         contact.transferState(*previous, *parents);
       Run r;
@@ -647,7 +651,7 @@ TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
   meshList.set("Source", std::string("Half disc"));
   meshList.set("Initial mesh size", 0.2);
   auto m = sc::mesh::MeshFactory::build(meshList, 2, *comm)->mesh();
-  sc::contact::ContactSettings cs;
+  sc::contact::ContactSettings cs = defaultContactSettings();
   cs.obstaclePoint = {0.0, 0.0};
   cs.obstacleNormal = {0.0, 1.0};
   sc::contact::checkObstacle(*m, cs, {"Arc"});  // the Hertz scene: fine

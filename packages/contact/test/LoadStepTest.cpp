@@ -21,6 +21,8 @@
 #include <sc/solvers/LinearSolverFactory.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include "ContactTestSettings.hpp"
+
 namespace {
 
 using sc::contact::ContactPoint;
@@ -30,7 +32,7 @@ struct Scene {
   Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::DefaultComm<int>::getComm();
   Teuchos::RCP<sc::mesh::BisectionRefiner> refiner;
   sc::core::Material material{20600.0, 0.28};
-  sc::contact::ContactSettings cs;
+  sc::contact::ContactSettings cs = sc::contact::testing::defaultContactSettings();
 
   explicit Scene(int levels, double radius = 0.25, double nu = 0.28, double meshSize = 0.2)
   {
@@ -70,8 +72,7 @@ struct Scene {
     bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, {top[0], top[1]}, false});
     bcs.conditions.push_back({"Arc", sc::core::BoundaryType::Contact, {}, false});
     system.assemble({material, bcs, nullptr});
-    Teuchos::ParameterList newton;
-    sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, newton, comm);
+    sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, comm);
     if (previous)
       contact.transferState(*previous, *parents);
     Result r;

@@ -98,6 +98,7 @@ TEUCHOS_UNIT_TEST(LoadSteps, BoundaryAndBodyForceTables)
   sc::core::validateParameters(f, *sc::core::BodyForce::getValidParameters(), "test");
   sc::core::ProblemSettings problem;
   problem.dimension = 2;
+  problem.exactSolution = "None";
   const auto force = sc::core::BodyForce::fromParameters(f, problem);
   force.checkStepTable(2, 2);
   double value[2];

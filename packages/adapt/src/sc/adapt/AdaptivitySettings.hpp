@@ -9,11 +9,11 @@
 namespace sc::adapt {
 
 struct AdaptivitySettings {
-  int cycles = 0;                ///< refinement cycles after the first solve
-  std::string marking = "Dorfler";  ///< a name known to createMarker (Marker.hpp)
-  double bulkParameter = 0.5;    ///< θ ∈ (0, 1] of Dörfler / maximum marking
-  long long maxDofs = 2000000;   ///< no refinement once a solved cycle has this many DOFs (the deck default)
-  double targetError = 0.0;      ///< stop when η ≤ targetError · ‖A^{1/2}σ_h‖ (0: never)
+  int cycles{};            ///< refinement cycles after the first solve
+  std::string marking;     ///< a name known to createMarker (Marker.hpp)
+  double bulkParameter{};  ///< θ ∈ (0, 1] of Dörfler / maximum marking
+  long long maxDofs{};     ///< no refinement once a solved cycle has this many DOFs
+  double targetError{};    ///< stop when η ≤ targetError · ‖A^{1/2}σ_h‖ (0: never)
 
   /// Marking needs element indicators (every strategy but Uniform).
   bool needsIndicators() const { return marking != "Uniform"; }

@@ -238,21 +238,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
                                  const ContactSettings& settings,
                                  const core::Material& material,
                                  const std::vector<std::string>& contactBoundaries,
-                                 const Teuchos::ParameterList& newtonList,
                                  Teuchos::RCP<const Teuchos::Comm<int>> comm)
   : space_(space), settings_(settings), comm_(std::move(comm)),
     obstacle_(createObstacle(settings, space.dim()))
 {
-  Teuchos::ParameterList nl = newtonList;
-  core::validateParameters(nl, *getValidParameters(), "Contact/Newton");
-  maxIterations_ = nl.get<int>("Maximum iterations");
-  maxRemedies_ = nl.get<int>("Maximum remedies");
-  penaltyFactor_ = nl.get<double>("Penalty factor");
-  useHsw_ = nl.get<std::string>("3D slip linearisation") == "Hueber-Stadler-Wohlmuth";
-  coulombMethod_ = nl.get<std::string>("Coulomb method");
-  maxFixedPointIterations_ = nl.get<int>("Maximum fixed-point iterations");
-  fixedPointTolerance_ = nl.get<double>("Fixed-point tolerance");
-
   const auto& m = space.mesh();
   const int d = m.dim();
   const double cap = missCap(m);
@@ -361,7 +350,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
         p.n = fr[0];
         p.t1 = fr[1];
         p.t2 = fr[2];
-        p.c = penaltyFactor_ * twoMu / (hF * area);
+        p.c = settings_.newton.penaltyFactor * twoMu / (hF * area);
         // The dual weight w_p = Σ_q V(q, p) ℓ_q (ℓ_q = ψ_q·n_F / s_q, the Lagrange function of the
         // normal trace at q): ℓ_p itself, or B_p. Weighted gap with face quadrature (not lumped).
         for (int q = 0; q < fv.numPoints(); ++q) {
@@ -641,7 +630,7 @@ ActiveSetSolver::constraintRows(const ContactPoint& p) const
   //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
   // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
   // been evaluated in contact yet).
-  const bool hsw = useHsw_ && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
+  const bool hsw = settings_.newton.hueberStadlerWohlmuth && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
   double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
   bool hswRow = false;
   const auto r0 = p.previousRT();  // r_T^{n−1} of load steps (zero in the first step)
@@ -839,11 +828,11 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
 {
   fixedPoint_ = false;
   const bool coulomb = settings_.needsFriction() && settings_.frictionLaw == FrictionLaw::Coulomb;
-  if (!coulomb || coulombMethod_ == "Newton") {
+  if (!coulomb || settings_.newton.coulombMethod == "Newton") {
     solveActiveSet(K, b, solver, x);
     return;
   }
-  if (coulombMethod_ == "Newton, fixed point fallback") {
+  if (settings_.newton.coulombMethod == "Newton, fixed point fallback") {
     try {
       solveActiveSet(K, b, solver, x);
       return;
@@ -861,7 +850,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   fixedPoint_ = true;
   for (auto& p : points_)
     p.frictionBound = settings_.frictionCoefficient * std::max(0.0, -p.sigmaN);
-  for (outer = 1; outer <= maxFixedPointIterations_; ++outer) {
+  for (outer = 1; outer <= settings_.newton.maxFixedPointIterations; ++outer) {
     solveActiveSet(K, b, solver, x);
     total += stats_.newtonIterations;
     double change = 0.0, size = 0.0;
@@ -876,7 +865,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
     if (stepCallback_ && comm_->getRank() == 0)
       std::cout << "  contact: fixed point " << outer << ": bound change " << global[0] / std::max(global[1], 1e-300)
                 << " (relative)" << std::endl;
-    if (global[0] <= fixedPointTolerance_ * global[1]) {
+    if (global[0] <= settings_.newton.fixedPointTolerance * global[1]) {
       fixedPoint_ = false;
       stats_.newtonIterations = total;
       stats_.fixedPointIterations = outer;
@@ -887,9 +876,9 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   }
   fixedPoint_ = false;
   stats_.converged = false;
-  stats_.fixedPointIterations = maxFixedPointIterations_;
+  stats_.fixedPointIterations = settings_.newton.maxFixedPointIterations;
   SC_THROW_IF(true, core::ConvergenceError,
-              "the Coulomb fixed point did not settle in " << maxFixedPointIterations_
+              "the Coulomb fixed point did not settle in " << settings_.newton.maxFixedPointIterations
                   << " outer steps ('Contact/Newton/Maximum fixed-point iterations').");
 }
 
@@ -958,7 +947,7 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     elimination = eliminationBasis(K, b);
     basisScope.set(elimination.T);
   }
-  for (int it = 1; it <= maxIterations_; ++it) {
+  for (int it = 1; it <= settings_.newton.maxIterations; ++it) {
     const auto stepStart = std::chrono::steady_clock::now();
     if (holdsBody_)
       checkSomePointInContact(it - 1);
@@ -999,7 +988,7 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     Teuchos::reduceAll<int, int>(*comm_, Teuchos::REDUCE_MIN, 1, &seenLocal, &seenAll);
     history.push_back(sig);
     if (seenAll) {
-      SC_THROW_IF(stats_.remedies >= maxRemedies_, core::ConvergenceError,
+      SC_THROW_IF(stats_.remedies >= settings_.newton.maxRemedies, core::ConvergenceError,
                   "the contact active set cycles (a state repeated after " << it
                       << " Newton steps) and " << stats_.remedies
                       << " remedies did not help; try a smaller 'Contact/Newton/Penalty factor'.");
@@ -1008,7 +997,7 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     }
   }
   SC_THROW_IF(true, core::ConvergenceError,
-              "the contact active set did not settle in " << maxIterations_
+              "the contact active set did not settle in " << settings_.newton.maxIterations
                   << " Newton steps ('Contact/Newton/Maximum iterations'); the last step changed "
                   << stats_.changesPerIteration.back() << " points.");
 }

@@ -81,10 +81,11 @@ public:
   /// Fixed-point tolerance.
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
 
-  /// Points on the faces of `contactBoundaries` owned by this rank.
+  /// Points on the faces of `contactBoundaries` owned by this rank; the Newton limits and
+  /// variants are `settings.newton` (read once with the "Contact" list).
   ActiveSetSolver(const disc::MixedElasticitySpace& space, const ContactSettings& settings,
                   const core::Material& material, const std::vector<std::string>& contactBoundaries,
-                  const Teuchos::ParameterList& newtonList, Teuchos::RCP<const Teuchos::Comm<int>> comm);
+                  Teuchos::RCP<const Teuchos::Comm<int>> comm);
   ~ActiveSetSolver();
 
   /// Start from the states of the previous cycle's points through the refinement history
@@ -187,12 +188,6 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::unique_ptr<Obstacle> obstacle_;
   std::vector<ContactPoint> points_;
-  int maxIterations_, maxRemedies_;
-  double penaltyFactor_;
-  bool useHsw_ = true;
-  std::string coulombMethod_;
-  int maxFixedPointIterations_ = 50;
-  double fixedPointTolerance_ = 1e-8;
   bool fixedPoint_ = false;  ///< inside the Coulomb fixed point: Tresca rows with p.frictionBound
   ContactStatistics stats_;
   StepCallback stepCallback_;

@@ -108,7 +108,28 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
                                     : FrictionLaw::None;
   c.frictionCoefficient = pl.get<double>("Friction coefficient");
   c.trescaBound = pl.get<double>("Tresca bound");
+  c.newton = NewtonSettings::fromParameters(pl.sublist("Newton"));
   return c;
+}
+
+NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& nl)
+{
+  NewtonSettings s;
+  s.maxIterations = nl.get<int>("Maximum iterations");
+  s.penaltyFactor = nl.get<double>("Penalty factor");
+  s.maxRemedies = nl.get<int>("Maximum remedies");
+  s.hueberStadlerWohlmuth = nl.get<std::string>("3D slip linearisation") == "Hueber-Stadler-Wohlmuth";
+  s.coulombMethod = nl.get<std::string>("Coulomb method");
+  s.maxFixedPointIterations = nl.get<int>("Maximum fixed-point iterations");
+  s.fixedPointTolerance = nl.get<double>("Fixed-point tolerance");
+  return s;
+}
+
+NewtonSettings NewtonSettings::fromUncheckedParameters(const Teuchos::ParameterList& newtonList)
+{
+  Teuchos::ParameterList nl = newtonList;
+  core::validateParameters(nl, *ActiveSetSolver::getValidParameters(), "Contact/Newton");
+  return fromParameters(nl);
 }
 
 }  // namespace sc::contact

@@ -1,8 +1,9 @@
 #pragma once
 // "Contact": the rigid obstacle, the contact frame and the friction law (docs/theory.md §"Contact
-// and friction"). The contact package owns the whole sublist: getValidParameters() describes these
-// keys and the "Newton" sublist of ActiveSetSolver (the semismooth Newton settings, read by the
-// solver itself); fromParameters() reads a validated list.
+// and friction"), and the semismooth Newton settings of its "Newton" sublist. The contact package
+// owns the whole sublist: getValidParameters() describes these keys (the Newton keys are declared
+// by ActiveSetSolver::getValidParameters()); fromParameters() reads a validated list once. The
+// members carry no defaults of their own: the declarations are the only place a key gets one.
 #include <string>
 #include <vector>
 
@@ -18,20 +19,38 @@ enum class FrictionLaw { None, Tresca, Coulomb };
 /// literal linearisation).
 enum class ContactFrame { ObstacleNormal, BodyNormal };
 
+/// "Contact/Newton": the limits and variants of the semismooth Newton (active-set) solver.
+struct NewtonSettings {
+  int maxIterations{};            ///< Maximum iterations
+  double penaltyFactor{};         ///< Penalty factor (on c = 2μ/(h_F |F|))
+  int maxRemedies{};              ///< Maximum remedies
+  bool hueberStadlerWohlmuth{};   ///< 3D slip linearisation: HSW (true) or Frozen direction
+  std::string coulombMethod;      ///< Newton, fixed point fallback | Newton | Fixed point
+  int maxFixedPointIterations{};  ///< Maximum fixed-point iterations
+  double fixedPointTolerance{};   ///< Fixed-point tolerance
+
+  /// The values of a validated "Newton" list.
+  static NewtonSettings fromParameters(const Teuchos::ParameterList& validatedNewton);
+  /// The same for a list not yet checked (tests): a copy is validated (errors name
+  /// 'Contact/Newton/<key>') and completed with the declared defaults.
+  static NewtonSettings fromUncheckedParameters(const Teuchos::ParameterList& newtonList);
+};
+
 /// "Contact": the rigid obstacle and the friction law (docs/theory.md §"Contact and friction").
 struct ContactSettings {
-  std::string obstacle = "Plane";       ///< Plane, Circle (2D), Sphere (3D) or Cylinder (3D)
+  std::string obstacle;                ///< Plane, Circle (2D), Sphere (3D) or Cylinder (3D)
   std::vector<double> obstaclePoint;   ///< a point of the plane
   /// Plane: its unit normal, pointing into the body. Indenters: the unit direction in which the
   /// indenter presses into the body (the contact summary's load axis).
   std::vector<double> obstacleNormal;
   std::vector<double> obstacleCenter;  ///< indenters: centre of the circle/sphere, a point of the axis
-  double obstacleRadius = 1.0;         ///< indenters: radius
+  double obstacleRadius{};             ///< indenters: radius
   std::vector<double> obstacleAxis;    ///< Cylinder: unit axis direction
-  ContactFrame frame = ContactFrame::ObstacleNormal;
-  FrictionLaw frictionLaw = FrictionLaw::None;
-  double frictionCoefficient = 0.0;
-  double trescaBound = 0.0;
+  ContactFrame frame{};
+  FrictionLaw frictionLaw{};
+  double frictionCoefficient{};
+  double trescaBound{};
+  NewtonSettings newton;  ///< the "Newton" sublist
 
   /// Friction rows are built only when they can be non-zero (no friction machinery otherwise).
   bool needsFriction() const
@@ -42,8 +61,8 @@ struct ContactSettings {
   /// The valid "Contact" list: obstacle, frame and friction keys, and the "Newton" sublist
   /// (ActiveSetSolver::getValidParameters()).
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
-  /// The obstacle, frame and friction of a validated "Contact" list, checked against the
-  /// dimension (InputError); its "Newton" sublist goes to the ActiveSetSolver.
+  /// The obstacle, frame, friction and Newton settings of a validated "Contact" list, checked
+  /// against the dimension (InputError).
   static ContactSettings fromParameters(const Teuchos::ParameterList& contactList, int dimension);
 };
 

@@ -87,7 +87,7 @@ Material Material::fromParameters(const Teuchos::ParameterList& pl, int dimensio
   Material m;
   m.youngModulus = pl.get<double>("Young modulus");
   m.poissonRatio = pl.get<double>("Poisson ratio");
-  m.planeStress = pl.isParameter("Plane") && pl.get<std::string>("Plane") == "Stress";
+  m.planeStress = pl.get<std::string>("Plane") == "Stress";
   SC_THROW_IF(m.planeStress && dimension != 2, InputError,
               "'Material/Plane' = 'Stress' is a 2D model (a thin plate, σ_zz = 0), but "
               "Problem/Dimension is "
@@ -424,13 +424,10 @@ BodyForce BodyForce::fromParameters(const Teuchos::ParameterList& pl, const Prob
 {
   BodyForce f;
   const int dim = problem.dimension;
-  if (pl.isParameter("Value"))
-    f.value = toVector(pl.get<Teuchos::Array<double>>("Value"));
-  if (pl.isParameter("Expression"))
-    f.expression =
-        compileExpressions(pl.get<Teuchos::Array<std::string>>("Expression"), "Body Force/Expression");
-  if (pl.isParameter("Values per step"))
-    f.valuesPerStep = toVector(pl.get<Teuchos::Array<double>>("Values per step"));
+  f.value = toVector(pl.get<Teuchos::Array<double>>("Value"));
+  f.expression =
+      compileExpressions(pl.get<Teuchos::Array<std::string>>("Expression"), "Body Force/Expression");
+  f.valuesPerStep = toVector(pl.get<Teuchos::Array<double>>("Values per step"));
   SC_THROW_IF(!f.value.empty() && !f.expression.empty(), InputError,
               "'Body Force/Value' and 'Body Force/Expression' are both given; give one of them "
               "(Value: constants, Expression: formulas of x, y, z).");

@@ -2,7 +2,8 @@
 // The data of a scene (docs/theory.md §"The problem", §9), separate from the kernels that use it:
 // problem dimension, material, boundary conditions, and the discretisation degree.
 // Each struct owns one sublist of the deck and describes it in getValidParameters();
-// fromParameters() reads a validated list.
+// fromParameters() reads a validated list. The members carry no defaults of their own: the
+// declarations are the only place a key gets its default value.
 //
 // The other settings live with their packages: "Contact" (with "Contact/Newton") in
 // sc::contact::ContactSettings, "Linear Solver" in sc::solvers::LinearSolverFactory,
@@ -20,9 +21,9 @@
 namespace sc::core {
 
 struct ProblemSettings {
-  int dimension = 2;  ///< 2 (plane strain) or 3
-  std::string exactSolution = "None";  ///< name for createExactSolution (ExactSolution.hpp)
-  double manufacturedWavenumber = M_PI;  ///< ω of the smooth manufactured solution
+  int dimension{};                 ///< 2 (plane strain) or 3
+  std::string exactSolution;       ///< name for createExactSolution (ExactSolution.hpp)
+  double manufacturedWavenumber{};  ///< ω of the smooth manufactured solution
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static ProblemSettings fromParameters(const Teuchos::ParameterList& problemList);
 };
@@ -32,9 +33,9 @@ struct ProblemSettings {
 /// or, with `Plane` = `Stress`, in plane stress (σ_zz = 0, a thin plate); docs/theory.md §"Loads
 /// and supports".
 struct Material {
-  double youngModulus = 1.0;
-  double poissonRatio = 0.3;
-  bool planeStress = false;  ///< 2D only ("Material/Plane" = "Stress"); ignored in 3D
+  double youngModulus{};
+  double poissonRatio{};
+  bool planeStress{};  ///< 2D only ("Material/Plane" = "Stress"); ignored in 3D
 
   double shearModulus() const { return youngModulus / (2.0 * (1.0 + poissonRatio)); }
   /// c_d in Aτ = (1/2μ)(τ − c_d tr(τ) I): ν / (1 + (d − 2)ν) for plane strain (d = 2) and 3D;
@@ -153,7 +154,7 @@ struct BodyForce {
 };
 
 struct DiscretizationSettings {
-  int degree = 1;  ///< k of RT_k × DP_k × CP_k (docs/theory.md §"Mixed formulation")
+  int degree{};  ///< k of RT_k × DP_k × CP_k (docs/theory.md §"Mixed formulation")
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static DiscretizationSettings fromParameters(const Teuchos::ParameterList& list);
 };

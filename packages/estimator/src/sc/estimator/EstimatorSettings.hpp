@@ -8,7 +8,7 @@ namespace sc::estimator {
 struct EstimatorSettings {
   /// u^R in continuous P_{k+1} (default, docs/theory.md) or P_k (the talk's choice: rate k, and
   /// an efficiency index that grows under refinement).
-  bool reconstructionDegreeKPlusOne = true;
+  bool reconstructionDegreeKPlusOne{};
 
   /// Degree p of u^R for a discretisation of degree k.
   int reconstructionDegree(int k) const { return reconstructionDegreeKPlusOne ? k + 1 : k; }

@@ -113,6 +113,20 @@ Teuchos::ParameterList validated(const Teuchos::ParameterList& meshList)
   return user.sublist("Mesh");
 }
 
+// The "Local refinement" sublist checked against its declaration, with its declared defaults.
+Teuchos::ParameterList validatedLocal(const Teuchos::ParameterList& list)
+{
+  Teuchos::ParameterList user, valid;
+  user.sublist("Mesh").sublist("Local refinement") = list;
+  user.sublist("Mesh").sublist("Local refinement").setName("Local refinement");
+  valid.sublist("Mesh").set("Local refinement",
+                            MeshFactory::getValidParameters()->sublist("Local refinement"));
+  sc::core::validateParameters(user, valid, "Mesh parameters");
+  return user.sublist("Mesh").sublist("Local refinement");
+}
+
+std::vector<double> toVector(const Teuchos::Array<double>& a) { return {a.begin(), a.end()}; }
+
 int sceneDimension(const std::string& source)
 {
   if (source == "Half ball" || source == "Unit cube") return 3;
@@ -121,11 +135,47 @@ int sceneDimension(const std::string& source)
 }
 }  // namespace
 
-Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::ParameterList& meshList,
-                                                        int dimension)
+LocalRefinementSettings LocalRefinementSettings::fromParameters(const Teuchos::ParameterList& l)
 {
-  const Teuchos::ParameterList p = validated(meshList);
-  const std::string source = p.get<std::string>("Source");
+  LocalRefinementSettings s;
+  s.levels = l.get<int>("Levels");
+  s.center = toVector(l.get<Teuchos::Array<double>>("Center"));
+  s.radius = l.get<double>("Radius");
+  s.boundary = l.get<std::string>("Boundary");
+  return s;
+}
+
+LocalRefinementSettings LocalRefinementSettings::fromUncheckedParameters(
+    const Teuchos::ParameterList& local)
+{
+  return fromParameters(validatedLocal(local));
+}
+
+MeshSettings MeshSettings::fromParameters(const Teuchos::ParameterList& p)
+{
+  MeshSettings s;
+  s.source = p.get<std::string>("Source");
+  s.initialMeshSize = p.get<double>("Initial mesh size");
+  s.uniformRefinements = p.get<int>("Uniform refinements");
+  s.memoryLimitGB = p.get<double>("Memory limit (GB)");
+  s.projectBoundary = p.get<bool>("Project boundary");
+  s.geometryOrder = p.get<int>("Geometry order");
+  s.radius = p.get<double>("Radius");
+  s.file = p.get<std::string>("File");
+  s.lowerCorner = toVector(p.get<Teuchos::Array<double>>("Lower corner"));
+  s.upperCorner = toVector(p.get<Teuchos::Array<double>>("Upper corner"));
+  s.local = LocalRefinementSettings::fromParameters(p.sublist("Local refinement"));
+  return s;
+}
+
+MeshSettings MeshSettings::fromUncheckedParameters(const Teuchos::ParameterList& meshList)
+{
+  return fromParameters(validated(meshList));
+}
+
+Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const MeshSettings& s, int dimension)
+{
+  const std::string& source = s.source;
   SC_THROW_IF(dimension != 2 && dimension != 3, sc::core::InputError,
               "Problem/Dimension = " << dimension << " is not valid (2 or 3)");
   const int sd = sceneDimension(source);
@@ -135,24 +185,24 @@ Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::Parameter
                                   << (dimension == 2 ? "'Half disc', 'Unit square', 'Rectangle'"
                                                      : "'Half ball', 'Unit cube'")
                                   << ", 'Gmsh file', 'Gmsh geometry'");
-  const double R = p.get<double>("Radius");
+  const double R = s.radius;
   if (source == "Half disc") return Teuchos::rcp(new HalfDiscGeometry(R));
   if (source == "Half ball") return Teuchos::rcp(new HalfBallGeometry(R));
   if (source == "Unit square") return Teuchos::rcp(new BoxGeometry({0, 0}, {1, 1}, source));
   if (source == "Unit cube") return Teuchos::rcp(new BoxGeometry({0, 0, 0}, {1, 1, 1}, source));
-  if (source == "Rectangle") {
-    const auto lo = p.get<Teuchos::Array<double>>("Lower corner");
-    const auto hi = p.get<Teuchos::Array<double>>("Upper corner");
-    return Teuchos::rcp(new BoxGeometry(std::vector<double>(lo.begin(), lo.end()),
-                                        std::vector<double>(hi.begin(), hi.end()), source));
-  }
+  if (source == "Rectangle") return Teuchos::rcp(new BoxGeometry(s.lowerCorner, s.upperCorner, source));
   if (source == "Gmsh geometry") {
-    const std::string file = p.get<std::string>("File");
-    SC_THROW_IF(file.empty(), sc::core::InputError,
+    SC_THROW_IF(s.file.empty(), sc::core::InputError,
                 "'Mesh/Source' = 'Gmsh geometry' needs 'Mesh/File' (path of a .geo script)");
-    return Teuchos::rcp(new CadGeometry(file, dimension));
+    return Teuchos::rcp(new CadGeometry(s.file, dimension));
   }
   return Teuchos::null;  // Gmsh file: its boundary comes with the file (initialMesh)
+}
+
+Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const Teuchos::ParameterList& meshList,
+                                                        int dimension)
+{
+  return buildGeometry(MeshSettings::fromUncheckedParameters(meshList), dimension);
 }
 
 namespace {
@@ -160,8 +210,8 @@ namespace {
 // The local-refinement selection of one sweep (Levels > 0; validated Center).
 struct LocalSelection {
   int d = 0, part = -1;
-  Teuchos::Array<double> center;
-  double radius = 0.25;
+  std::vector<double> center;
+  double radius = 0.0;
   bool within(const SimplexMesh& m, const int* verts, int n) const
   {
     double r2 = 0.0;
@@ -187,57 +237,41 @@ struct LocalSelection {
   }
 };
 
-// The "Local refinement" sublist checked against its declaration, with its declared defaults: the
-// one place its keys get values (no second defaults in the code that reads them).
-Teuchos::ParameterList validatedLocal(const Teuchos::ParameterList& list)
+LocalSelection localSelection(const SimplexMesh& mesh, const LocalRefinementSettings& local)
 {
-  Teuchos::ParameterList user, valid;
-  user.sublist("Mesh").sublist("Local refinement") = list;
-  user.sublist("Mesh").sublist("Local refinement").setName("Local refinement");
-  valid.sublist("Mesh").set("Local refinement",
-                            MeshFactory::getValidParameters()->sublist("Local refinement"));
-  sc::core::validateParameters(user, valid, "Mesh parameters");
-  return user.sublist("Mesh").sublist("Local refinement");
-}
-
-LocalSelection localSelection(const SimplexMesh& mesh, const Teuchos::ParameterList& list)
-{
-  const Teuchos::ParameterList local = validatedLocal(list);
-  const int levels = local.get<int>("Levels");
   LocalSelection s;
   s.d = mesh.dim();
-  s.center = local.get<Teuchos::Array<double>>("Center");
+  s.center = local.center;
   SC_THROW_IF(static_cast<int>(s.center.size()) != s.d, sc::core::InputError,
               "'Mesh/Local refinement/Center' needs " << s.d << " values (the problem dimension) "
-              "when 'Mesh/Local refinement/Levels' = " << levels << " > 0; got "
+              "when 'Mesh/Local refinement/Levels' = " << local.levels << " > 0; got "
               << s.center.size() << ".");
-  s.radius = local.get<double>("Radius");
-  const std::string boundary = local.get<std::string>("Boundary");
+  s.radius = local.radius;
   // boundaryId() throws an InputError listing the valid part names.
-  s.part = boundary.empty() ? -1 : mesh.boundaryId(boundary);
+  s.part = local.boundary.empty() ? -1 : mesh.boundaryId(local.boundary);
   return s;
 }
 
 // Stage 1, before Gmsh runs: the initial mesh of a scene from its measure and the target size.
-void checkInitialEstimate(const Teuchos::ParameterList& p, int dimension, const ResourceLimit& limit)
+void checkInitialEstimate(const MeshSettings& p, int dimension, const ResourceLimit& limit)
 {
   if (!limit.active()) return;
   const double measure = sceneMeasure(p, dimension);
   if (measure <= 0.0) return;  // Gmsh file: checked once read (its size is the file's)
-  const double h = p.get<double>("Initial mesh size");
+  const double h = p.initialMeshSize;
   const double n = estimateInitialElements(measure, h, dimension);
   if (!(n > limit.maxElements())) return;
   const double hMin = h * std::pow(n / limit.maxElements(), 1.0 / dimension);
   SC_THROW_IF(true, sc::core::InputError,
               "'Mesh/Initial mesh size' = " << h << " is too small: the initial mesh of the '"
-                  << p.get<std::string>("Source") << "' (" << (dimension == 2 ? "area " : "volume ")
+                  << p.source << "' (" << (dimension == 2 ? "area " : "volume ")
                   << measure << ") would have " << limit.describe(n)
                   << ". Make 'Mesh/Initial mesh size' at least about " << hMin
                   << " or raise 'Mesh/Memory limit (GB)' on a larger machine.");
 }
 
 // Stage 2, on the initial mesh (all ranks): uniform levels (×2^d each) and the local sweeps.
-void checkRefinementEstimate(const Teuchos::ParameterList& p, const SimplexMesh& initial,
+void checkRefinementEstimate(const MeshSettings& p, const SimplexMesh& initial,
                              const ResourceLimit& limit)
 {
   if (!limit.active()) return;
@@ -248,7 +282,7 @@ void checkRefinementEstimate(const Teuchos::ParameterList& p, const SimplexMesh&
     SC_THROW_IF(true, sc::core::InputError,
                 "the initial mesh (" << initial.origin() << ") has " << limit.describe(n0)
                     << ". Use a coarser mesh.");
-  const int uniform = p.get<int>("Uniform refinements");
+  const int uniform = p.uniformRefinements;
   const double nU = n0 * std::pow(2.0, d * uniform);
   if (nU > maxN) {
     const int fit = static_cast<int>(std::floor(std::log2(maxN / n0) / d));
@@ -258,15 +292,14 @@ void checkRefinementEstimate(const Teuchos::ParameterList& p, const SimplexMesh&
                     << limit.describe(nU) << ". At most " << std::max(fit, 0)
                     << " uniform levels fit.");
   }
-  const Teuchos::ParameterList& local = p.sublist("Local refinement");
-  const int levels = local.get<int>("Levels");
+  const int levels = p.local.levels;
   if (levels == 0) return;
   const auto est = MeshFactory::estimateRefinement(p, initial);
   if (est.local > maxN) {
-    Teuchos::ParameterList q(p);
+    MeshSettings q(p);
     int fit = 0;
     for (; fit < levels; ++fit) {
-      q.sublist("Local refinement").set("Levels", fit + 1);
+      q.local.levels = fit + 1;
       if (MeshFactory::estimateRefinement(q, initial).local > maxN) break;
     }
     SC_THROW_IF(true, sc::core::InputError,
@@ -283,26 +316,29 @@ void checkRefinementEstimate(const Teuchos::ParameterList& p, const SimplexMesh&
 
 double MeshFactory::estimateInitialElements(const Teuchos::ParameterList& meshList, int dimension)
 {
-  const Teuchos::ParameterList p = validated(meshList);
+  const MeshSettings p = MeshSettings::fromUncheckedParameters(meshList);
   const double measure = sceneMeasure(p, dimension);
   if (measure <= 0.0) return -1.0;
-  return sc::mesh::estimateInitialElements(measure, p.get<double>("Initial mesh size"), dimension);
+  return sc::mesh::estimateInitialElements(measure, p.initialMeshSize, dimension);
 }
 
 MeshEstimate MeshFactory::estimateRefinement(const Teuchos::ParameterList& meshList,
                                              const SimplexMesh& initial)
 {
-  const Teuchos::ParameterList p = validated(meshList);
+  return estimateRefinement(MeshSettings::fromUncheckedParameters(meshList), initial);
+}
+
+MeshEstimate MeshFactory::estimateRefinement(const MeshSettings& p, const SimplexMesh& initial)
+{
   const int d = initial.dim();
   MeshEstimate e;
   e.initial = initial.numElements();
-  const int uniform = p.get<int>("Uniform refinements");
+  const int uniform = p.uniformRefinements;
   e.uniform = e.initial * std::pow(2.0, d * uniform);
   e.local = e.uniform;
-  const Teuchos::ParameterList& local = p.sublist("Local refinement");
-  const int levels = local.get<int>("Levels");
+  const int levels = p.local.levels;
   if (levels == 0) return e;
-  const LocalSelection sel = localSelection(initial, local);
+  const LocalSelection sel = localSelection(initial, p.local);
   // Selected elements after the uniform levels: ×2^d (volume) or ×2^(d-1) (faces on a part).
   const bool surface = sel.part >= 0;
   e.selected = static_cast<double>(sel.marked(initial).size()) *
@@ -319,48 +355,46 @@ MeshEstimate MeshFactory::estimateRefinement(const Teuchos::ParameterList& meshL
 namespace {
 
 // The initial mesh, and for a Gmsh file the boundary it gives (null otherwise).
-GmshMeshIO::MeshFile initialMesh(const Teuchos::ParameterList& p, int dimension,
+GmshMeshIO::MeshFile initialMesh(const MeshSettings& p, int dimension,
                                  const Teuchos::RCP<const Geometry>& geometry)
 {
   if (geometry.is_null()) {
-    const std::string file = p.get<std::string>("File");
-    SC_THROW_IF(file.empty(), sc::core::InputError,
+    SC_THROW_IF(p.file.empty(), sc::core::InputError,
                 "'Mesh/Source' = 'Gmsh file' needs 'Mesh/File' (path of a .msh file)");
-    return GmshMeshIO::readMeshFile(file, dimension);
+    return GmshMeshIO::readMeshFile(p.file, dimension);
   }
-  const double h = p.get<double>("Initial mesh size");
+  const double h = p.initialMeshSize;
   if (const auto* cad = dynamic_cast<const CadGeometry*>(geometry.get()))
-    return {GmshMeshIO::meshCad(*cad, h, p.get<int>("Geometry order")), Teuchos::null};
+    return {GmshMeshIO::meshCad(*cad, h, p.geometryOrder), Teuchos::null};
   return {GmshMeshIO::meshGeometry(*geometry, h), Teuchos::null};
 }
 
-Teuchos::RCP<BisectionRefiner> finish(const Teuchos::ParameterList& p,
+Teuchos::RCP<BisectionRefiner> finish(const MeshSettings& p,
                                       Teuchos::RCP<const SimplexMesh> initial,
                                       Teuchos::RCP<const Geometry> geometry, bool split,
                                       const ResourceLimit& limit)
 {
   if (split) initial = splitElementsWithAllVerticesOnBoundary(*initial);
   checkRefinementEstimate(p, *initial, limit);
-  SC_THROW_IF(p.get<int>("Geometry order") == 2 && !p.get<bool>("Project boundary"), core::InputError,
+  SC_THROW_IF(p.geometryOrder == 2 && !p.projectBoundary, core::InputError,
               "'Mesh/Geometry order' = 2 places the curved elements' nodes on the exact boundary, "
               "but 'Mesh/Project boundary' = false keeps the initial polygon: set 'Mesh/Geometry "
               "order' = 1 for the straight-boundaries study, or 'Mesh/Project boundary' = true.");
-  auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.get<bool>("Project boundary")));
-  for (int i = 0; i < p.get<int>("Uniform refinements"); ++i) refiner->refineUniformly();
-  MeshFactory::refineLocally(*refiner, p.sublist("Local refinement"), limit);
+  auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.projectBoundary));
+  for (int i = 0; i < p.uniformRefinements; ++i) refiner->refineUniformly();
+  MeshFactory::refineLocally(*refiner, p.local, limit);
   return refiner;
 }
 
 }  // namespace
 
-Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
-                                                  int dimension, const Teuchos::Comm<int>& comm,
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const MeshSettings& p, int dimension,
+                                                  const Teuchos::Comm<int>& comm,
                                                   bool splitBoundarySimplices,
                                                   const ResourceLimit& limit)
 {
-  if (comm.getSize() == 1) return build(meshList, dimension, splitBoundarySimplices, limit);
-  const Teuchos::ParameterList p = validated(meshList);  // same on every rank: throws everywhere
-  auto geometry = buildGeometry(p, dimension);
+  if (comm.getSize() == 1) return build(p, dimension, splitBoundarySimplices, limit);
+  auto geometry = buildGeometry(p, dimension);  // the same settings on every rank: throws everywhere
   checkInitialEstimate(p, dimension, limit);  // the same limit on every rank: throws everywhere
   std::vector<double> coords, boundaryNodes;
   std::vector<int> elems, bfv, bpart, boundaryPart;
@@ -402,11 +436,26 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   return finish(p, mesh, geometry, splitBoundarySimplices, limit);
 }
 
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
+                                                  int dimension, const Teuchos::Comm<int>& comm,
+                                                  bool splitBoundarySimplices,
+                                                  const ResourceLimit& limit)
+{
+  // Validated on every rank alike: an error is thrown everywhere.
+  return build(MeshSettings::fromUncheckedParameters(meshList), dimension, comm,
+               splitBoundarySimplices, limit);
+}
+
 void MeshFactory::refineLocally(BisectionRefiner& refiner, const Teuchos::ParameterList& list,
                                 const ResourceLimit& limit)
 {
-  const Teuchos::ParameterList local = validatedLocal(list);
-  const int levels = local.get<int>("Levels");
+  refineLocally(refiner, LocalRefinementSettings::fromUncheckedParameters(list), limit);
+}
+
+void MeshFactory::refineLocally(BisectionRefiner& refiner, const LocalRefinementSettings& local,
+                                const ResourceLimit& limit)
+{
+  const int levels = local.levels;
   if (levels == 0) return;
   const LocalSelection sel = localSelection(*refiner.mesh(), local);
   for (int level = 0; level < levels; ++level) {
@@ -425,11 +474,10 @@ void MeshFactory::refineLocally(BisectionRefiner& refiner, const Teuchos::Parame
   }
 }
 
-Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
-                                                  int dimension, bool splitBoundarySimplices,
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const MeshSettings& p, int dimension,
+                                                  bool splitBoundarySimplices,
                                                   const ResourceLimit& limit)
 {
-  const Teuchos::ParameterList p = validated(meshList);
   auto geometry = buildGeometry(p, dimension);
   checkInitialEstimate(p, dimension, limit);
   auto file = initialMesh(p, dimension, geometry);
@@ -437,21 +485,24 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& 
   return finish(p, file.mesh, geometry, splitBoundarySimplices, limit);
 }
 
-}  // namespace sc::mesh
-
-namespace sc::mesh {
-
-bool MeshFactory::hasCurvedElements(const Teuchos::ParameterList& meshList,
-                                    const BisectionRefiner& refiner)
+Teuchos::RCP<BisectionRefiner> MeshFactory::build(const Teuchos::ParameterList& meshList,
+                                                  int dimension, bool splitBoundarySimplices,
+                                                  const ResourceLimit& limit)
 {
-  return meshList.get<int>("Geometry order") >= 2 && !refiner.geometry().is_null() &&
+  return build(MeshSettings::fromUncheckedParameters(meshList), dimension, splitBoundarySimplices,
+               limit);
+}
+
+bool MeshFactory::hasCurvedElements(const MeshSettings& settings, const BisectionRefiner& refiner)
+{
+  return settings.geometryOrder >= 2 && !refiner.geometry().is_null() &&
          refiner.projectsBoundary() && !refiner.geometry()->curvedBoundaryNames().empty();
 }
 
-Teuchos::RCP<const CurvedElements> MeshFactory::curvedElements(const Teuchos::ParameterList& meshList,
+Teuchos::RCP<const CurvedElements> MeshFactory::curvedElements(const MeshSettings& settings,
                                                                const BisectionRefiner& refiner)
 {
-  if (!hasCurvedElements(meshList, refiner))
+  if (!hasCurvedElements(settings, refiner))
     return Teuchos::null;
   return Teuchos::rcp(new CurvedElements(refiner.mesh(), *refiner.geometry()));
 }

@@ -10,16 +10,16 @@
 
 namespace sc::mesh {
 
-double sceneMeasure(const Teuchos::ParameterList& p, int dimension)
+double sceneMeasure(const MeshSettings& p, int dimension)
 {
-  const std::string source = p.get<std::string>("Source");
-  const double R = p.get<double>("Radius");
+  const std::string& source = p.source;
+  const double R = p.radius;
   if (source == "Half disc") return M_PI * R * R / 2.0;
   if (source == "Half ball") return 2.0 * M_PI * R * R * R / 3.0;
   if (source == "Unit square" || source == "Unit cube") return 1.0;
   if (source == "Rectangle") {
-    const auto lo = p.get<Teuchos::Array<double>>("Lower corner");
-    const auto hi = p.get<Teuchos::Array<double>>("Upper corner");
+    const auto& lo = p.lowerCorner;
+    const auto& hi = p.upperCorner;
     double m = 1.0;
     for (int i = 0; i < dimension && i < static_cast<int>(lo.size()); ++i)
       m *= std::abs(hi[i] - lo[i]);

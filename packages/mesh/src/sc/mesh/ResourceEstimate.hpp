@@ -6,7 +6,7 @@
 // A mesh whose estimate exceeds the memory limit is an InputError naming the key, the estimate
 // and the limit, instead of a hang in Gmsh or a std::bad_alloc.
 
-#include <Teuchos_ParameterList.hpp>
+#include <sc/mesh/MeshSettings.hpp>
 
 #include <limits>
 #include <string>
@@ -43,8 +43,8 @@ struct MeshEstimate {
   double closure = 0.0;   ///< new elements per selected element, with the closure
 };
 
-/// Measure (area/volume) of the domain of a validated Mesh list, or -1 for 'Gmsh file'.
-double sceneMeasure(const Teuchos::ParameterList& validatedMesh, int dimension);
+/// Measure (area/volume) of the domain of the Mesh settings, or -1 for 'Gmsh file'.
+double sceneMeasure(const MeshSettings& settings, int dimension);
 
 /// Elements of Gmsh's mesh of a domain of this measure at target size h.
 double estimateInitialElements(double measure, double h, int dimension);

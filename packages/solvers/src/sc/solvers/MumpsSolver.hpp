@@ -16,15 +16,15 @@
 namespace sc::solvers {
 
 struct MumpsOptions {
-  int memoryRelaxationPercent = 30;  ///< ICNTL(14): extra workspace over the analysis estimate
-  int workspaceRetries = 3;          ///< on INFOG(1) = -8/-9: retry with ICNTL(14) doubled
-  int ordering = 2;                  ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
-  bool verbose = false;              ///< MUMPS diagnostics on stdout (ICNTL(1..4))
+  int memoryRelaxationPercent{};  ///< ICNTL(14): extra workspace over the analysis estimate
+  int workspaceRetries{};         ///< on INFOG(1) = -8/-9: retry with ICNTL(14) doubled
+  int ordering{};                 ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
+  bool verbose{};                 ///< MUMPS diagnostics on stdout (ICNTL(1..4))
 };
 
 class MumpsSolver : public DirectSolver {
 public:
-  explicit MumpsSolver(const MumpsOptions& options = MumpsOptions());
+  explicit MumpsSolver(const MumpsOptions& options);
   ~MumpsSolver() override;  // JOB = -2 on the communicator of the last operator
   std::string name() const override { return "MUMPS"; }
 
