@@ -10,7 +10,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_Time.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -28,6 +28,7 @@
 #include <sc/contact/Obstacle.hpp>
 #include <sc/io/CsvWriter.hpp>
 #include <sc/io/HistoryTable.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/ExactSolution.hpp>
 #include <sc/disc/ElementValues.hpp>
@@ -187,20 +188,10 @@ void Simulation::setupMesh()
   std::string source;
   if (comm_->getRank() == 0)
     available = mesh::availableMemoryBytes(&source);
-  Teuchos::broadcast<int, double>(*comm_, 0, &available);
-  {
-    std::vector<char> c(source.begin(), source.end());
-    int n = static_cast<int>(c.size());
-    Teuchos::broadcast<int, int>(*comm_, 0, &n);
-    c.resize(n);
-    if (n > 0)
-      Teuchos::broadcast<int, char>(*comm_, 0, n, c.data());
-    source.assign(c.begin(), c.end());
-  }
+  core::broadcast(*comm_, 0, available);
+  core::broadcast(*comm_, 0, source);
   // The program's own memory before any mesh, on all ranks: a Memory limit counts it too.
-  double baseline = 0.0;
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, mesh::residentMemoryBytes(),
-                                  Teuchos::outArg(baseline));
+  const double baseline = core::sumOverRanks(*comm_, mesh::residentMemoryBytes());
   limit_ = mesh::makeResourceLimit(meshSettings_.memoryLimitGB,
                                    problem_.dimension, discretization_.degree, comm_->getSize(),
                                    adaptivity_.maxDofs, available, source, baseline);
@@ -470,10 +461,10 @@ void Simulation::warnIfNoContact()
   // (the coarse faces' points lie further from the obstacle than the prescribed displacement:
   // measured below about 1e-3 R on the Hertz half disc's 0.2 mesh, docs/performance.md). The
   // run cannot tell the two apart, so it says so (once, on stderr and in summary.json).
-  long long active = 0, global = 0;
+  long long active = 0;
   for (const auto& p : contactSolver_->points())
     active += p.status != contact::PointStatus::Free;
-  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &active, &global);
+  const long long global = core::sumOverRanks(*comm_, active);
   if (global > 0 || warnedNoContact_)
     return;
   warnedNoContact_ = true;
@@ -588,9 +579,7 @@ void Simulation::collectResults()
         r.contact ? &contactForce : nullptr, output_.momentPoint, *comm_);
   }
   // The measure of the discrete domain: with curved elements, that of their quadratic maps.
-  const double localMeasure = disc::ownedMeasure(*space_);
-  double measure = 0.0;
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_SUM, 1, &localMeasure, &measure);
+  const double measure = core::sumOverRanks(*comm_, disc::ownedMeasure(*space_));
   const auto* curved = space_->curvedElementsPtr().get();
   r.mesh.vertices = mesh_->numVertices();
   r.mesh.elements = mesh_->numElements();
@@ -708,8 +697,7 @@ void Simulation::timedCheckpoint(int cycle, const std::vector<int>& marked, bool
   writeCheckpoint(cycle, marked, stepComplete);
   // Its time is known only after the summary record was written (and copied into the
   // checkpoint): summary.json has it from the next write on (the next cycle's, or the last).
-  double seconds = Teuchos::Time::wallTime() - start, slowest = 0.0;
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, seconds, Teuchos::outArg(slowest));
+  const double slowest = core::maxOverRanks(*comm_, Teuchos::Time::wallTime() - start);
   summary_->currentCycle()["timings"]["checkpoint"] = slowest;
 }
 

@@ -16,6 +16,7 @@
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/contact/Hertz.hpp>
 #include <sc/contact/Obstacle.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/FaceDofPoints.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
@@ -142,7 +143,7 @@ std::vector<std::array<double, 2>> gatherActiveProfile(const std::vector<sc::con
       mine.push_back(p.x[0]);
       mine.push_back(p.sigmaN);
     }
-  const auto gathered = sc::contact::gatherAllVariable(mine, *comm);
+  const auto gathered = sc::core::gatherAllConcatenated(*comm, mine);
   const int total = static_cast<int>(gathered.size());
   std::vector<std::array<double, 2>> profile;
   for (int i = 0; i + 1 < total; i += 2)
@@ -568,7 +569,7 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
     for (const auto& q : r0.solved)
       mine.insert(mine.end(), {static_cast<double>(q.face), q.x[0], q.x[1],
                                static_cast<double>(q.status), q.direction[0]});
-    const auto old = sc::contact::gatherAllVariable(mine, *comm);
+    const auto old = sc::core::gatherAllConcatenated(*comm, mine);
     long long counts[3] = {0, 0, 0}, checked[2] = {0, 0};  // per status; unrefined, refined faces
     for (const auto& p : r1.initial) {
       const int parent = parents[p.face];

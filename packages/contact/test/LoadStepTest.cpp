@@ -12,6 +12,7 @@
 
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/core/Collective.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/BisectionRefiner.hpp>
@@ -269,7 +270,7 @@ TEUCHOS_UNIT_TEST(LoadSteps, CattaneoMindlin)
       mine.push_back(p.x[0]);
       mine.push_back(p.sigmaT[0] * p.t1[0]);  // x part of the traction on the body
     }
-  const auto all = sc::contact::gatherAllVariable(mine, *scene.comm);
+  const auto all = sc::core::gatherAllConcatenated(*scene.comm, mine);
   const double c = cOverA * a, sign = s2.summary.force[0] > 0 ? 1.0 : -1.0;
   double worst = 0.0;
   int pairs = 0;

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <iostream>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_SerialDenseMatrix.hpp>
 #include <Teuchos_SerialDenseSolver.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
 #include <sc/disc/ElementValues.hpp>
@@ -378,8 +378,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   // such a degree on every rank together.
   // checkContactDegree() rejects such degrees up front; this is the same check on the actual
   // faces (they must agree: the ratio is affine-invariant).
-  double globalMin = 1.0;
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MIN, 1, &minRelativeWeight, &globalMin);
+  const double globalMin = core::minOverRanks(*comm_, minRelativeWeight);
   SC_THROW_IF(globalMin <= 1e-10, core::InternalError,
               "a contact point of RT_" << space.degree() << " in " << d
                   << "D has a non-positive weight (min ∫_F L_p / |F| = " << globalMin
@@ -392,9 +391,7 @@ bool ActiveSetSolver::hasFriction() const { return settings_.needsFriction(); }
 
 long long ActiveSetSolver::globalNumPoints() const
 {
-  long long local = static_cast<long long>(points_.size()), global = 0;
-  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &local, &global);
-  return global;
+  return core::sumOverRanks(*comm_, static_cast<long long>(points_.size()));
 }
 
 void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
@@ -421,7 +418,7 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
     for (int i = 0; i < d; ++i)
       mine.push_back(q.history[i] != 0.0 ? q.history[i] / q.weight : 0.0);
   }
-  const auto all = gatherAllVariable(mine, *comm_);
+  const auto all = core::gatherAllConcatenated(*comm_, mine);
   const std::size_t n = all.size() / stride;
   if (n == 0 || parentFace.empty())
     return;  // no history (first cycle): every point starts free
@@ -609,9 +606,7 @@ int ActiveSetSolver::updateState(bool flipToStick)
     p.status = status;
     p.direction = xi;
   }
-  int global = 0;
-  Teuchos::reduceAll<int, int>(*comm_, Teuchos::REDUCE_SUM, 1, &changes, &global);
-  return global;
+  return core::sumOverRanks(*comm_, changes);
 }
 
 std::array<ActiveSetSolver::ConstraintRow, 3>
@@ -791,8 +786,8 @@ void ActiveSetSolver::startNearestPointsInContact()
     active += p.status != PointStatus::Free;
     nearest = std::min(nearest, p.gap / p.weight);
   }
-  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &active, &globalActive);
-  Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MIN, 1, &nearest, &globalNearest);
+  globalActive = core::sumOverRanks(*comm_, active);
+  globalNearest = core::minOverRanks(*comm_, nearest);
   if (globalActive > 0)
     return;
   // The mean gap, not the gap at the point: the weighted gap G_p is what the contact row
@@ -806,10 +801,10 @@ void ActiveSetSolver::startNearestPointsInContact()
 
 void ActiveSetSolver::checkSomePointInContact(int step) const
 {
-  long long active = 0, global = 0;
+  long long active = 0;
   for (const auto& p : points_)
     active += p.status != PointStatus::Free;
-  Teuchos::reduceAll<int, long long>(*comm_, Teuchos::REDUCE_SUM, 1, &active, &global);
+  const long long global = core::sumOverRanks(*comm_, active);
   SC_THROW_IF(global == 0, core::ConvergenceError,
               "no contact point is in contact after Newton step "
                   << step << ", but the contact alone holds the body along the obstacle's normal "
@@ -861,7 +856,7 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
       p.frictionBound = s;
     }
     double local[2] = {change, size}, global[2];
-    Teuchos::reduceAll<int, double>(*comm_, Teuchos::REDUCE_MAX, 2, local, global);
+    core::maxOverRanks(*comm_, 2, local, global);
     if (stepCallback_ && comm_->getRank() == 0)
       std::cout << "  contact: fixed point " << outer << ": bound change " << global[0] / std::max(global[1], 1e-300)
                 << " (relative)" << std::endl;
@@ -984,8 +979,7 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     int seenLocal = 0;
     for (std::size_t k = 0; k + 1 < history.size() && !seenLocal; ++k)
       seenLocal = history[k] == sig;
-    int seenAll = 0;
-    Teuchos::reduceAll<int, int>(*comm_, Teuchos::REDUCE_MIN, 1, &seenLocal, &seenAll);
+    const int seenAll = core::minOverRanks(*comm_, seenLocal);
     history.push_back(sig);
     if (seenAll) {
       SC_THROW_IF(stats_.remedies >= settings_.newton.maxRemedies, core::ConvergenceError,

@@ -23,12 +23,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 
@@ -214,9 +214,7 @@ bool ActiveSetSolver::eliminatedMatrix(const Elimination& e, Teuchos::RCP<CrsMat
       rv[i] = diag * fv[i];
     }
   A->fillComplete(G.getDomainMap(), G.getRangeMap());
-  int anyMixed = 0;
-  Teuchos::reduceAll<int, int>(*comm_, Teuchos::REDUCE_MAX, 1, &mixed, &anyMixed);
-  return anyMixed == 0;
+  return core::maxOverRanks(*comm_, mixed) == 0;
 }
 
 }  // namespace sc::contact

@@ -43,10 +43,6 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
 
 }  // namespace
 
-std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm)
-{
-  return core::gatherAllConcatenated(comm, mine);
-}
 
 ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
                                 const std::vector<double>& obstacleNormal,

@@ -38,10 +38,6 @@ struct ContactSummary {
   long long numFree = 0, numStick = 0, numSlip = 0;
 };
 
-/// Every rank's `mine` concatenated in rank order, on every rank: core::gatherAllConcatenated,
-/// under the name ActiveSetSolver still calls.
-std::vector<double> gatherAllVariable(const std::vector<double>& mine, const Teuchos::Comm<int>& comm);
-
 /// `pressureFloor`: points with −σ_N ≤ pressureFloor count as free (the application passes
 /// 1e-12 × 2μ, a strain of 1e-12: a zero load then reports no zone).
 ContactSummary summarizeContact(const std::vector<ContactPoint>& localPoints, int dim,

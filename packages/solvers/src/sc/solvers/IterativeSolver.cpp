@@ -14,7 +14,6 @@
 #include <BelosSolverFactory_Tpetra.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_Time.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -22,6 +21,7 @@
 #include <Tpetra_Operator.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/solvers/BlockExtraction.hpp>
 #include <sc/solvers/DirectSolver.hpp>
@@ -35,13 +35,6 @@ namespace {
 using GO = Map::global_ordinal_type;
 using LO = Map::local_ordinal_type;
 using Operator = Tpetra::Operator<>;
-
-double maxOverRanks(const Teuchos::Comm<int>& comm, double v)
-{
-  double r = v;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &v, &r);
-  return r;
-}
 
 }  // namespace
 
@@ -201,7 +194,7 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
         sums[0] += v(k);
       sums[1] += dv[l];
     }
-    Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 2, sums, global);
+    core::sumOverRanks(*map->getComm(), 2, sums, global);
     const double hrz = global[1] > 0.0 ? global[0] / global[1] : 1.0;
     prec->rotationInverseDiagonal.resize(prec->rotationLids.size());
     for (std::size_t i = 0; i < prec->rotationLids.size(); ++i) {
@@ -265,7 +258,7 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
     Teuchos::RCP<Operator> op = m.stressOfOperator;
     prec.stressMultigrid = MueLu::CreateTpetraPreconditioner(op, ml);
   }
-  stats_.preconditionerSeconds = maxOverRanks(*map->getComm(), timer.stop());
+  stats_.preconditionerSeconds = core::maxOverRanks(*map->getComm(), timer.stop());
   ++stats_.preconditionerSetups;
 }
 
@@ -336,7 +329,7 @@ void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
   }
   stats_.iterations = iterations;
   stats_.totalIterations += iterations;
-  stats_.solveSeconds = maxOverRanks(*m.A->getComm(), timer.stop());
+  stats_.solveSeconds = core::maxOverRanks(*m.A->getComm(), timer.stop());
   ++stats_.solves;
   SC_THROW_IF(!(residual <= options_.tolerance), sc::core::ConvergenceError,
               name() << ": no convergence in " << iterations

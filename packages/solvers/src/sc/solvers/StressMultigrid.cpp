@@ -4,7 +4,6 @@
 
 #include <memory>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
@@ -12,6 +11,7 @@
 #include <Tpetra_Operator.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/solvers/DirectSolver.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
@@ -238,8 +238,8 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
       for (LO i = 0; i < static_cast<LO>(dv.size()); ++i)
         if (dv[i] == 0.0)
           dead.push_back(i);
-      long long nDead = static_cast<long long>(dead.size()), anyDead = 0;
-      Teuchos::reduceAll(*Ac->getComm(), Teuchos::REDUCE_SUM, 1, &nDead, &anyDead);
+      const long long anyDead =
+          core::sumOverRanks(*Ac->getComm(), static_cast<long long>(dead.size()));
       if (anyDead > 0) {
         CrsMatrix D(Ac->getRowMap(), 1);
         for (LO i : dead) {
