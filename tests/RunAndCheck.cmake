@@ -1,7 +1,7 @@
 # Lists (SETS, CHECKS, MPIFLAGS) are "|"-separated.
 # Run the app on DECK with --set SETS into OUT (through mpiexec with NP ranks), then check its
-# summary.json with check_summary CHECKS, and that the XDMF output exists and no temporary file
-# is left.
+# summary.json with check_summary against the stored values of EXPECTED (a tests/expected file)
+# or CHECKS, and that the XDMF output exists and no temporary file is left.
 foreach(v SETS CHECKS MPIFLAGS)
   string(REPLACE "|" ";" ${v} "${${v}}")
 endforeach()
@@ -23,7 +23,12 @@ file(GLOB leftovers "${OUT}/*.tmp*")
 if(leftovers)
   message(FATAL_ERROR "temporary files left behind: ${leftovers}")
 endif()
-execute_process(COMMAND ${CHECK} ${OUT}/summary.json ${CHECKS} RESULT_VARIABLE rc)
+if(EXPECTED)
+  execute_process(COMMAND ${CHECK} ${OUT}/summary.json --expected ${EXPECTED} --np ${NP}
+                  RESULT_VARIABLE rc)
+else()
+  execute_process(COMMAND ${CHECK} ${OUT}/summary.json ${CHECKS} RESULT_VARIABLE rc)
+endif()
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "summary.json checks failed")
 endif()

@@ -10,8 +10,9 @@ decks          every input/*.xml: a number of cycles stated in a comment ("16 Do
                must equal the deck's Adaptivity/Cycles, unless the comment names that count as a
                setting ("Adaptivity/Cycles = 0"); a final DOF count ("... to 49021 DOFs") or a
                final eta ("eta 3.78e-3") stated in a comment must agree with the values that
-               tests/CMakeLists.txt stores for a run of the deck as shipped (an sc_run_test with
-               that DECK and no SETS), to the precision the comment gives. A test of the deck as
+               the tests store for a run of the deck as shipped (an sc_run_test of
+               tests/CMakeLists.txt with that DECK and no SETS; its CHECKS or its EXPECTED file in
+               tests/expected), to the precision the comment gives. A test of the deck as
                shipped whose cycle count (size:/cycles) is not Cycles + 1 is reported too.
                Decks that no test runs as shipped but whose run as shipped is a committed study
                CSV (STUDY_RUNS: the 3D Hertz decks, run by docs/adaptivity/hertz3d_study.py with
@@ -24,7 +25,7 @@ main-job       README.md and docs/user-guide.md: a sentence about the main job (
                of input/hertz2d.xml; the user guide's table of shipped decks must give each deck's
                Marking and Cycles.
 main-numbers   the numbers README.md quotes for the main job against the values that the test
-               run_hertz2d_main_job stores in tests/CMakeLists.txt (its CHECKS, which that test
+               run_hertz2d_main_job stores (tests/expected/hertz2d_main_job.json, which that test
                asserts against a run of input/hertz2d.xml at 1 and 4 ranks): each row of the
                table under the heading about the main job that names summary.json keys in
                backquotes (`dofs.total`, `contact.force[1]`) and gives one number per key (text in
@@ -43,6 +44,7 @@ Only the Python 3 standard library is used.
 
 import argparse
 import csv
+import json
 import os
 import re
 import sys
@@ -100,6 +102,22 @@ def deck_cycles(path):
     return 0
 
 
+def expected_checks(path):
+    """{check key: value text} of a tests/expected file, in the form of the CHECKS strings
+    ("near:/pointer": "value:tolerance", "eq:/pointer": "value", ...)."""
+    checks = {}
+    if not os.path.exists(path):
+        return checks
+    text = lambda v: v if isinstance(v, str) else json.dumps(v)
+    for c in json.load(open(path, encoding="utf-8")).get("checks", []):
+        kind, pointer = c.get("check"), c.get("pointer")
+        if kind == "near":
+            checks[f"near:{pointer}"] = f"{text(c['value'])}:{text(c['tolerance'])}"
+        elif kind in ("eq", "ge", "le", "gt", "size"):
+            checks[f"{kind}:{pointer}"] = text(c["value"])
+    return checks
+
+
 def stored_runs(root):
     """{deck file name: [(test name, line, {check key: value text})]} for the sc_run_test calls of
     tests/CMakeLists.txt that run a deck as shipped (no SETS)."""
@@ -119,6 +137,9 @@ def stored_runs(root):
             if "=" in item:
                 key, value = item.split("=", 1)
                 checks[key] = value
+        em = re.search(r"EXPECTED\s+([\w.]+)", body)
+        if em:  # the stored values in tests/expected/<file> (tests/expected/README.md)
+            checks.update(expected_checks(os.path.join(root, "tests", "expected", em.group(1))))
         runs.setdefault(deck.group(1), []).append((m.group(1), line_of(text, m.start()), checks))
     return runs
 
@@ -387,7 +408,7 @@ def compare_quoted(path, line, key, value, tol, stored, findings, where):
     pointer = key_pointer(key)
     if pointer not in stored:
         findings.add(path, line, f"{where} quotes {key} = {value:.6g} for the main job, but {MAIN_TEST} "
-                                 f"stores no value for {pointer} (tests/CMakeLists.txt): no test "
+                                 f"stores no value for {pointer} (tests/expected): no test "
                                  f"asserts it")
     elif abs(value - stored[pointer]) > tol * (1 + 1e-9) + 1e-300:
         findings.add(path, line, f"{where} quotes {key} = {value:.6g} for the main job, but {MAIN_TEST} "

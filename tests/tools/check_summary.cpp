@@ -12,12 +12,23 @@
 //                                         dofs/total) lies in [MIN, MAX]
 //     decreasing:FIRST                    eta/total strictly decreases from cycle FIRST on
 //   A pointer component or cycle index "-1" means the last element of an array.
+//
+//   check_summary FILE --expected EXPECTED.json [--np N]
+//   reads the checks from a file of expected values (tests/expected/README.md): an object with a
+//   "source" (where the numbers come from) and "checks", a list of objects, each one CHECK above:
+//     {"check": "near", "pointer": P, "value": V, "tolerance": RELTOL}
+//     {"check": "eq" | "ge" | "le" | "gt" | "size", "pointer": P, "value": V}
+//     {"check": "exists", "pointer": P}
+//     {"check": "rate", "cycles": [FIRST, LAST], "min": MIN, "max": MAX}
+//     {"check": "decreasing", "from_cycle": FIRST}
+//   each with an optional "source" of its own. A value "@NP@" stands for N (the run's ranks).
 // Prints one line per check (measured value, expected, tolerance) and exits 1 if any failed.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,13 +108,69 @@ bool checkEta(const json& root, const std::string& kind, const std::string& rest
   return p.size() >= 2 && rate >= lo && rate <= hi;
 }
 
+// A number or other JSON value as check_summary reads it back (doubles in their shortest
+// round-trip form, so that the file's value and the checked one are the same double).
+std::string text(const json& v, const std::string& np)
+{
+  if (v.is_string())
+    return v.get<std::string>() == "@NP@" ? np : v.get<std::string>();
+  return v.dump();
+}
+
+// The CHECK strings of an expected-values file (format above); throws on a malformed entry.
+std::vector<std::string> checksOfFile(const std::string& path, const std::string& np)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw std::runtime_error("cannot open '" + path + "'");
+  const json file = json::parse(in);
+  if (!file.is_object() || !file.contains("source") || !file.at("source").is_string() ||
+      file.at("source").get<std::string>().empty() || !file.contains("checks") ||
+      !file.at("checks").is_array() || file.at("checks").empty())
+    throw std::runtime_error("'" + path + "' needs a non-empty \"source\" and \"checks\"");
+  std::vector<std::string> checks;
+  for (const json& c : file.at("checks")) {
+    const std::string kind = c.at("check").get<std::string>();
+    std::string check;
+    if (kind == "rate")
+      check = "rate:" + text(c.at("cycles").at(0), np) + ":" + text(c.at("cycles").at(1), np) +
+              "=" + text(c.at("min"), np) + ":" + text(c.at("max"), np);
+    else if (kind == "decreasing")
+      check = "decreasing:" + text(c.at("from_cycle"), np);
+    else if (kind == "exists")
+      check = "exists:" + c.at("pointer").get<std::string>();
+    else if (kind == "near")
+      check = "near:" + c.at("pointer").get<std::string>() + "=" + text(c.at("value"), np) + ":" +
+              text(c.at("tolerance"), np);
+    else if (kind == "eq" || kind == "ge" || kind == "le" || kind == "gt" || kind == "size")
+      check = kind + ":" + c.at("pointer").get<std::string>() + "=" + text(c.at("value"), np);
+    else
+      throw std::runtime_error("'" + path + "': unknown check '" + kind + "'");
+    checks.push_back(check);
+  }
+  return checks;
+}
+
 }  // namespace
 
 int main(int argc, char* argv[])
 {
   if (argc < 3) {
-    std::cerr << "usage: check_summary FILE CHECK...\n";
+    std::cerr << "usage: check_summary FILE CHECK... | check_summary FILE --expected FILE [--np N]\n";
     return 2;
+  }
+  std::vector<std::string> checks(argv + 2, argv + argc);
+  if (checks[0] == "--expected") {
+    if (checks.size() != 2 && !(checks.size() == 4 && checks[2] == "--np")) {
+      std::cerr << "usage: check_summary FILE --expected FILE [--np N]\n";
+      return 2;
+    }
+    try {
+      checks = checksOfFile(checks[1], checks.size() == 4 ? checks[3] : "1");
+    } catch (const std::exception& e) {
+      std::cerr << "check_summary: expected values: " << e.what() << "\n";
+      return 1;
+    }
   }
   std::ifstream in(argv[1]);
   if (!in) {
@@ -118,8 +185,7 @@ int main(int argc, char* argv[])
     return 1;
   }
   int failures = 0;
-  for (int a = 2; a < argc; ++a) {
-    const std::string check = argv[a];
+  for (const std::string& check : checks) {
     const auto colon = check.find(':');
     const std::string kind = check.substr(0, colon);
     if (kind == "rate" || kind == "decreasing") {
@@ -193,6 +259,7 @@ int main(int argc, char* argv[])
     std::cout << (ok ? "  ok    " : "  FAIL  ") << msg.str() << "\n";
     failures += ok ? 0 : 1;
   }
-  std::cout << (argc - 2 - failures) << " passed, " << failures << " failed" << std::endl;
+  std::cout << (static_cast<int>(checks.size()) - failures) << " passed, " << failures << " failed"
+            << std::endl;
   return failures ? 1 : 0;
 }
