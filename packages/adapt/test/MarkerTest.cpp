@@ -15,7 +15,7 @@
 #include <sc/core/Parameters.hpp>
 #include <sc/estimator/ErrorEstimator.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 namespace {
 

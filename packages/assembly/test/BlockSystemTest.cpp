@@ -22,7 +22,7 @@
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/core/Error.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include <Teuchos_DefaultComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 using sc::assembly::ErrorNorms;
 using sc::test::fittedRate;

@@ -9,7 +9,7 @@
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Teuchos_UnitTestHarness.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 using sc::test::solveVerification;
 using sc::test::VerificationSetup;

@@ -17,7 +17,7 @@
 #include <sc/disc/ElementValues.hpp>
 #include <sc/estimator/ErrorEstimator.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 namespace {
 

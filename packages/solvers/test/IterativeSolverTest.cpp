@@ -17,7 +17,7 @@
 
 #include <sc/core/Error.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 namespace {
 

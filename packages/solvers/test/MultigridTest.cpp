@@ -19,7 +19,7 @@
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/solvers/LinearSolverFactory.hpp>
 
-#include "ElasticityTestProblem.hpp"
+#include <sc/testing/ElasticityTestProblem.hpp>
 
 namespace {
 
