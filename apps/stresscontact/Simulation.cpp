@@ -22,6 +22,7 @@
 #include <sc/assembly/MixedElasticitySystem.hpp>
 #include <sc/solvers/StressHierarchy.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/ContactProblem.hpp>
 #include <sc/contact/BodyFrameCheck.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/contact/Hertz.hpp>
@@ -45,7 +46,6 @@
 #include <sc/io/XdmfWriter.hpp>
 #include <sc/mesh/CurvedElements.hpp>
 #include <sc/mesh/MeshFactory.hpp>
-#include <sc/mesh/RefinementTransfer.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 
 #include "ContactFields.hpp"
@@ -220,12 +220,25 @@ void Simulation::setupMesh()
   assembly::ContactPlane plane;
   if (boundaryConditions_.hasContact() && contact_.obstacle == "Plane")
     std::copy(contact_.obstacleNormal.begin(), contact_.obstacleNormal.end(), plane.normal.begin());
-  contactHoldsBody_ =
+  const bool contactHoldsBody =
       assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
                                       boundaryConditions_.hasContact() && contact_.obstacle == "Plane"
                                           ? &plane
                                           : nullptr) >= 0;
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
+  if (boundaryConditions_.hasContact()) {
+    contactProblem_ = std::make_unique<contact::ContactProblem>(
+        material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact), comm_);
+    contactProblem_->setContactHoldsBody(contactHoldsBody);
+    contactProblem_->setStepCallback([this](int step, long long changes, double seconds) {
+      std::ostringstream os;
+      os << "Newton step " << step << ": " << changes << " points changed state";
+      if (solver_->isIterative())
+        os << ", " << solver_->lastSolveStats().iterations << " Krylov iterations";
+      os << " (" << std::fixed << std::setprecision(1) << seconds << " s)";
+      progress_.report("contact", os.str());
+    });
+  }
   if (std::any_of(boundaryConditions_.conditions.begin(), boundaryConditions_.conditions.end(),
                   [](const auto& c) { return c.inNormalFrame(); }) &&
       mesh::MeshFactory::hasCurvedElements(meshSettings_, *refiner_))
@@ -309,12 +322,11 @@ void Simulation::refine(const adapt::Marking& marking)
       step = &refiner_->refineUniformly();
     }
   }
-  if (boundaryConditions_.hasContact()) {
-    // The contact state goes to the next mesh through the history of this step: the parent of
-    // every new boundary face (ActiveSetSolver::transferState). Then the history is forgotten,
-    // so that memory stays O(N); the parents are dropped once the state is transferred.
+  if (contactProblem_) {
+    // The contact state goes to the next mesh through the history of this step (the parent of
+    // every new boundary face); then the history is forgotten, so that memory stays O(N).
     auto t = timers_.scope("transfer");
-    contactFaceParents_ = mesh::boundaryFaceParents(*previous, *refiner_->mesh(), *step);
+    contactProblem_->refined(*previous, *refiner_->mesh(), *step);
   }
   if (hierarchy_)
     hierarchy_->addMesh(refiner_->mesh(), step->elementParent);
@@ -411,45 +423,31 @@ void Simulation::solveContact()
   setupElasticity();
   {
     auto t = timers_.scope("contact setup");
-    contactSolver_ = std::make_unique<contact::ActiveSetSolver>(
-        *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact),
-        comm_);
-    contactSolver_->setContactHoldsBody(contactHoldsBody_);
+    contactProblem_->setUp(*space_, contact_);  // the obstacle of the current load step
   }
   {
     // Nested iteration: the previous cycle's contact state is the Newton start, carried by the
     // refinement history (first cycle: no history, every point starts free).
     auto t = timers_.scope("transfer");
-    contactSolver_->transferState(previousPoints_, contactFaceParents_);
-    contactFaceParents_ = std::vector<int>();
+    contactProblem_->transferState();
   }
-  {
-    contactSolver_->setStepCallback([this](int step, long long changes, double seconds) {
-      std::ostringstream os;
-      os << "Newton step " << step << ": " << changes << " points changed state";
-      if (solver_->isIterative())
-        os << ", " << solver_->lastSolveStats().iterations << " Krylov iterations";
-      os << " (" << std::fixed << std::setprecision(1) << seconds << " s)";
-      progress_.report("contact", os.str());
-    });
-  }
-  progress_.report("contact", std::to_string(contactSolver_->globalNumPoints()) + " contact points, " +
-                                  (contactSolver_->hasFriction() ? "with" : "without") + " friction");
+  const contact::ActiveSetSolver& contactSolver = contactProblem_->solver();
+  progress_.report("contact", std::to_string(contactSolver.globalNumPoints()) + " contact points, " +
+                                  (contactSolver.hasFriction() ? "with" : "without") + " friction");
   solution_ = assembler_->createVector();
   {
     auto t = timers_.scope("solve");
     system_->prepareSolver(*solver_, multigridLevels());
     linearIterations_.clear();
-    contactSolver_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
-    linearIterations_ = contactSolver_->statistics().linearIterationsPerStep;
+    contactProblem_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
+    linearIterations_ = contactSolver.statistics().linearIterationsPerStep;
   }
-  const auto& st = contactSolver_->statistics();
+  const auto& st = contactSolver.statistics();
   std::ostringstream os;
   os << st.newtonIterations << " Newton steps, changes per step:";
   for (int c : st.changesPerIteration)
     os << " " << c;
   progress_.report("contact solve", os.str());
-  previousPoints_ = contactSolver_->points();
   solved_ = true;
   warnIfNoContact();
 }
@@ -462,7 +460,7 @@ void Simulation::warnIfNoContact()
   // measured below about 1e-3 R on the Hertz half disc's 0.2 mesh, docs/performance.md). The
   // run cannot tell the two apart, so it says so (once, on stderr and in summary.json).
   long long active = 0;
-  for (const auto& p : contactSolver_->points())
+  for (const auto& p : contactProblem_->points())
     active += p.status != contact::PointStatus::Free;
   const long long global = core::sumOverRanks(*comm_, active);
   if (global > 0 || warnedNoContact_)
@@ -495,12 +493,12 @@ void Simulation::recordSolve()
   ls.symbolicReuses = ls.last.symbolicReuses + symbolicReusesBefore_;
   ls.preconditionerSetups = ls.last.preconditionerSetups + preconditionerSetupsBefore_;
   // One linear solve per Newton step (1 without contact).
-  ls.solves = contactSolver_ ? contactSolver_->statistics().newtonIterations : 1;
+  ls.solves = contactProblem_ ? contactProblem_->solver().statistics().newtonIterations : 1;
   ls.iterationsPerSolve = linearIterations_;
-  if (contactSolver_) {
+  if (contactProblem_) {
     ContactRecord& c = r.contact.emplace();
-    c.points = contactSolver_->points();
-    c.statistics = contactSolver_->statistics();
+    c.points = contactProblem_->solver().points();
+    c.statistics = contactProblem_->solver().statistics();
     c.summary = contact::summarizeContact(c.points, problem_.dimension, contact_.obstacleNormal,
                                           *comm_, 1e-12 * 2.0 * material_.shearModulus());
     if (hertzRadius_)
@@ -607,7 +605,7 @@ void Simulation::collectResults()
   if (solved_)
     f.averages = assembly::computeCellAverages(*assembler_, *solution_);
   if (r.contact)  // the contact points with their point values (ContactFields.hpp)
-    f.contactPoints = contactPointGrid(*contactSolver_, problem_.dimension, discretization_.degree);
+    f.contactPoints = contactPointGrid(contactProblem_->solver(), problem_.dimension, discretization_.degree);
 }
 
 adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marking) const
@@ -775,13 +773,8 @@ void Simulation::run()
            << loadSteps_.times[step];
         progress_.message(os.str());
       }
-      if (step > 0 && !continues && boundaryConditions_.hasContact()) {
-        contact::commitLoadStep(previousPoints_);
-        // The same mesh: every contact face is its own parent.
-        contactFaceParents_.assign(mesh_->numFaces(), -1);
-        for (int f : mesh_->boundaryFaces())
-          contactFaceParents_[f] = f;
-      }
+      if (step > 0 && !continues && contactProblem_)
+        contactProblem_->commitLoadStep(*mesh_);  // the same mesh, r_T the friction history
       stepFirstCycle_ = continues ? resume_.stepFirstCycle : lastCycle_ + 1;
       adapt::AdaptiveLoop& loop = step == 0 ? *loop_ : *laterStepLoop_;
       if (continues)

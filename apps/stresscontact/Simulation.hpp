@@ -64,8 +64,7 @@ namespace sc::adapt {
 class AdaptiveLoop;
 }
 namespace sc::contact {
-class ActiveSetSolver;
-struct ContactPoint;
+class ContactProblem;
 }
 
 namespace sc::app {
@@ -239,16 +238,9 @@ private:
   /// What the cycle produced, for the output step (started by solve, completed by estimate).
   std::unique_ptr<CycleResults> results_;
 
-  // Contact (a boundary of Type Contact): the active-set solver of the cycle and the points of
-  // the previous cycle (nested iteration: the next cycle starts from their state).
-  std::unique_ptr<contact::ActiveSetSolver> contactSolver_;
-  std::vector<contact::ContactPoint> previousPoints_;
-  /// For every face of the current mesh, the boundary face of the previous mesh that contains it
-  /// (-1 off the boundary), from the last refinement step; empty without one (first cycle).
-  std::vector<int> contactFaceParents_;
-  /// No Displacement part, and the contact with the plane obstacle alone holds the body along
-  /// its normal (assembly::checkLoadsAndSupports).
-  bool contactHoldsBody_ = false;
+  // Contact (a boundary of Type Contact): the problem that lives across the cycles, with the
+  // points and their transfer to the next mesh and load step (null without contact).
+  std::unique_ptr<contact::ContactProblem> contactProblem_;
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<RunRecorder> recorder_;  ///< records results_ into summary_ and the CSVs

@@ -25,6 +25,7 @@
 
 #include <sc/solvers/StressHierarchy.hpp>
 #include <sc/contact/ActiveSetSolver.hpp>
+#include <sc/contact/ContactProblem.hpp>
 #include <sc/contact/ContactSummary.hpp>
 #include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
@@ -128,7 +129,8 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
   // history). All exact doubles: the restarted run computes the same numbers.
   const int d = problem_.dimension;
   std::vector<double> mine;
-  for (const auto& p : previousPoints_) {
+  static const std::vector<contact::ContactPoint> none;
+  for (const auto& p : contactProblem_ ? contactProblem_->points() : none) {
     mine.insert(mine.end(), p.x.begin(), p.x.begin() + d);
     mine.push_back(static_cast<double>(p.status));
     mine.push_back(p.direction[0]);
@@ -313,7 +315,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     std::sort(v.begin(), v.end());
     faceOf.emplace(std::move(v), f);
   }
-  previousPoints_.clear();
+  std::vector<contact::ContactPoint> restored;
   for (std::size_t k = 0; k < points.size(); k += stride) {
     // Each point's face must be a boundary face of the restored mesh (the mesh of its cycle).
     std::vector<int> v;
@@ -345,8 +347,10 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     for (auto* v : {&p.t1, &p.t2})
       for (int i = 0; i < d; ++i)
         (*v)[i] = points[at++];
-    previousPoints_.push_back(p);
+    restored.push_back(p);
   }
+  if (contactProblem_)
+    contactProblem_->restorePoints(std::move(restored));
 
   Json cycles, steps;
   try {
