@@ -11,8 +11,12 @@ cattaneo-mindlin  the Hertz half disc (nu = 0.4999, mu_F = 0.4) pressed (step 1)
                   is unchanged by the tangential step (to 1e-3), Q/(mu_F P) is about 1/2 (the
                   deck's intent), the stick zone shrinks, and its half-width (c+ + c-)/2 =
                   a sqrt(1 - Q/(mu_F P)) within 0.03 of a (the half disc is not a half-space:
-                  measured 0.719 against 0.707). Stored: the final P, Q and stick half-width of
-                  a 1-rank run of the shipped deck (2026-12-03), to 1e-8 at every rank count.
+                  measured 0.719 against 0.707). Peer: P, Q (within 1.5e-3) and the stick zone's
+                  two ends (within 0.04 a) against the primal GetFEM computation with incremental
+                  friction, read from docs/peer/cattaneo_mindlin2d_primal.csv (docs/peer/README.md;
+                  measured -7.1e-4, -5.9e-4, -0.007 a, +0.026 a). Stored: the final P, Q and stick
+                  half-width of a 1-rank run of the shipped deck (2026-12-03), to 1e-8 at every
+                  rank count.
 mindlin-deresiewicz  input/mindlin_deresiewicz2d.xml: pressed (step 1), moved sideways to Q* about
                   mu_F P/2 (step 2), back half way (step 3: partial unloading) and on to -delta*
                   (step 4). Analytic: Johnson, Contact Mechanics (1985) §7.3 (Mindlin-Deresiewicz
@@ -75,6 +79,8 @@ import sys
 
 # The final cycle of the shipped deck on 1 rank (stored; every rank count must give them).
 STORED_CATTANEO = {"P": 147.59861012889849, "Q": 29.51683864909573, "stick": 0.05978696799024484}
+# Tolerances against the primal peer (docs/peer/README.md "Cattaneo-Mindlin"; peer_comparison).
+PEER_FORCE_TOL, PEER_END_TOL = 1.5e-3, 0.04
 # The last cycle of input/hertz2d_incremental.xml in N steps on 1 rank (stored): P, stick half-width.
 STORED_INCREMENTAL = {1: (108.07925045270595, 0.03450760522768301), 5: (107.84003023957762, 0.06514780158984862),
                       20: (107.81766384887045, 0.07126940503815328), 40: (107.81531776046484, 0.07126940503815328)}
@@ -232,10 +238,39 @@ def cattaneo_mindlin(summary, mu, checks, directory):
     csv_ends = stick_zone_from_csv(directory, second["cycle"])
     checks.check(all(abs(e - r) <= 1e-12 * a for e, r in zip(ends, csv_ends)),
                  f"stick_zone_ends {ends} are those of the contact CSV's stick points {csv_ends} (1e-12 a)")
+    peer_comparison(P, Q, a, ends, checks)
     for key, value in (("P", P), ("Q", Q), ("stick", c)):
         stored = STORED_CATTANEO[key]
         checks.check(abs(value - stored) <= 1e-8 * abs(stored),
                      f"{key} = {value!r} against the stored {stored!r} (1e-8)")
+
+
+def peer_comparison(P, Q, a, ends, checks):
+    """The end of step 2 against the independent primal computation with incremental Coulomb
+    friction (GetFEM, Taylor-Hood P2/P1 isoparametric, level 3: docs/peer/README.md
+    "Cattaneo-Mindlin", values read from docs/peer/cattaneo_mindlin2d_primal.csv). P and Q within
+    PEER_FORCE_TOL (the peer's own spread: Taylor-Hood against pure P2, docs/peer/README.md), the
+    stick zone's two ends within PEER_END_TOL a: this run's contact points are 0.0031 = 0.037 a
+    apart at the ends (its ends are midway between points), the peer's nodes 0.001 = 0.012 a.
+    Measured: P -7.1e-4, Q -5.9e-4; ends -0.007 a and +0.026 a."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
+                        "cattaneo_mindlin2d_primal.csv")
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(f)
+                if (r["level"], r["elem"], r["method"], r["step"]) == ("3", "th", "mult", "2")]
+    checks.check(len(rows) == 1, f"{path} has the level-3 Taylor-Hood row of step 2")
+    if len(rows) != 1:
+        return
+    peer = rows[0]
+    for name, value in (("P", P), ("Q", Q)):
+        ref = float(peer[name])
+        checks.check(abs(value / ref - 1.0) <= PEER_FORCE_TOL,
+                     f"{name} = {value:.6g} against the peer's {ref:.6g}: {value / ref - 1.0:.2e} (<= {PEER_FORCE_TOL})")
+    for side, value, key in (("lower", ends[0], "stick_minus"), ("upper", ends[1], "stick_plus")):
+        ref = float(peer[key])
+        checks.check(abs(value - ref) <= PEER_END_TOL * a,
+                     f"the stick zone's {side} end {value / a:.4f} a against the peer's {ref / a:.4f} a "
+                     f"({(value - ref) / a:+.4f} a, <= {PEER_END_TOL} a)")
 
 
 def contact_points(out, cycle):
