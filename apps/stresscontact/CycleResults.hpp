@@ -16,6 +16,9 @@
 #include <sc/mesh/Partitioning.hpp>
 #include <sc/solvers/SolveStatistics.hpp>
 
+#include <sc/adapt/StopCriteria.hpp>
+
+#include "EstimatedErrors.hpp"
 #include "ForceBalance.hpp"
 
 namespace sc::app {
@@ -76,6 +79,10 @@ struct CycleResults {
   double stressEnergyError = -1.0;  ///< ‖A^{1/2}(σ − σ_h)‖ when the exact solution is known
   std::optional<assembly::ErrorNorms> errors;  ///< against the exact solution, when known
   std::optional<CycleForces> forces;           ///< reactions and force balance of a solved cycle
+  /// The error bars of the headline quantities (solved and estimated cycles).
+  std::optional<EstimatedErrors> estimatedErrors;
+  /// The accuracy targets of `Adaptivity` against this cycle's error bars (empty without).
+  std::vector<adapt::TargetStatus> targets;
   MeshRecord mesh;
   /// Filled only when the run writes XDMF fields.
   std::optional<CycleFields> fields;

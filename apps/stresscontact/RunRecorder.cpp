@@ -78,6 +78,24 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
        << cs.equivalentZoneSize << "), max pressure " << cs.maxPressure << ", stick "
        << cs.stickZoneSize << " (" << cs.numStick << " stick, " << cs.numSlip << " slip points)";
     progress_.report("contact", os.str());
+    // The error bars (docs/output.md "Error bars"): null until the history has an estimate.
+    if (const auto& ee = results.estimatedErrors) {
+      auto& j = c["contact"]["estimated_error"];
+      j = nlohmann::ordered_json::object();
+      std::ostringstream eb;
+      eb.precision(3);
+      for (const auto& [key, e] : ee->contact) {
+        j[key] = e ? nlohmann::ordered_json(*e) : nlohmann::ordered_json(nullptr);
+        if (key.rfind("equivalent_", 0) == 0)
+          continue;  // in summary.json only
+        eb << (eb.tellp() > 0 ? ", " : "") << key;
+        if (e)
+          eb << " ± " << *e;
+        else
+          eb << " (none yet)";
+      }
+      progress_.report("error bars", eb.str());
+    }
   }
   if (const auto& estimate = results.estimate) {
     auto& eta = c["eta"];
@@ -98,9 +116,26 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
   }
   if (!stopReason.empty())
     c["stop_reason"] = stopReason;
+  // The accuracy targets against this cycle's error bars (docs/adaptivity.md).
+  if (!results.targets.empty()) {
+    auto& t = c["accuracy_targets"];
+    t = nlohmann::ordered_json::array();
+    for (const auto& s : results.targets)
+      t.push_back({{"quantity", s.name},
+                   {"key", s.key},
+                   {"target", s.target},
+                   {"estimated_relative_error",
+                    s.relativeError >= 0.0 ? nlohmann::ordered_json(s.relativeError)
+                                           : nlohmann::ordered_json(nullptr)},
+                   {"met", s.met}});
+  }
   if (results.solved) {
     // Reactions and the force balance, with the contact force recorded above (docs/output.md).
     c["reactions"] = results.forces->reactions;
+    if (const auto& ee = results.estimatedErrors)
+      for (const auto& [part, e] : ee->reactions)
+        c["reactions"][part]["estimated_error"] = {
+            {"force", e ? nlohmann::ordered_json(*e) : nlohmann::ordered_json(nullptr)}};
     c["force_balance"] = results.forces->balance;
     c["dofs"] = {{"stress", results.dofs.stress},
                  {"displacement", results.dofs.displacement},

@@ -9,6 +9,7 @@
 #include <numeric>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include <Teuchos_Time.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -51,6 +52,7 @@
 #include "ContactFields.hpp"
 #include "CycleResults.hpp"
 #include "DeckParameters.hpp"
+#include "EstimatedErrors.hpp"
 #include "FieldWriter.hpp"
 #include "ForceBalance.hpp"
 #include "RunRecorder.hpp"
@@ -121,6 +123,22 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   estimatorSettings_ = estimator::EstimatorSettings::fromParameters(params_->sublist("Estimator"));
   adaptivity_ = adapt::AdaptivitySettings::fromParameters(params_->sublist("Adaptivity"));
   output_ = io::OutputSettings(params_->sublist(io::OutputSettings::sublistName));
+  // Accuracy targets are on contact quantities (the stick zone's on friction): a target the scene
+  // cannot measure is an input error, not a target silently never met.
+  for (const auto& [key, value, needsFriction] :
+       {std::tuple{"Target force error", adaptivity_.targetForceError, false},
+        {"Target width error", adaptivity_.targetWidthError, false},
+        {"Target pressure error", adaptivity_.targetPressureError, false},
+        {"Target stick width error", adaptivity_.targetStickError, true}}) {
+    SC_THROW_IF(value > 0.0 && !boundaryConditions_.hasContact(), core::InputError,
+                "'Adaptivity/" << key << "' = " << value
+                    << " is a target on a contact quantity, but the scene has no boundary part of "
+                       "Type Contact. Use 'Adaptivity/Target error' (η relative) or remove the key.");
+    SC_THROW_IF(value > 0.0 && needsFriction && !contact_.needsFriction(), core::InputError,
+                "'Adaptivity/" << key << "' = " << value
+                    << " is a target on the stick zone, but the scene has no friction ('Contact/"
+                       "Friction law' None, or a zero coefficient or bound): there is no stick zone.");
+  }
   loop_ = std::make_unique<adapt::AdaptiveLoop>(adaptivity_, comm_, &progress_, &timers_);
   if (loadSteps_.numSteps() > 1) {
     adapt::AdaptivitySettings later = adaptivity_;
@@ -520,6 +538,16 @@ adapt::CycleEstimate Simulation::estimate(int /*cycle*/)
     e.norm = estimate->stressEnergyNorm;
     e.ownedElements = space_->ownedElements();
     e.indicators = estimate->indicators;
+    // The error bars from the history of the earlier cycles (summary.json's records), and the
+    // accuracy targets against them.
+    if (solved_) {
+      results_->estimatedErrors =
+          estimateErrors(summary_->json()["cycles"], *results_, problem_.dimension,
+                         boundaryConditions_.hasContact() && contact_.needsFriction(),
+                         loadSteps_.given ? loadStep_ + 1 : 0);
+      e.quantities = results_->estimatedErrors->targets;
+      results_->targets = loop_->stopCriteria().targets(e.quantities);
+    }
   }
   return e;
 }
@@ -760,6 +788,7 @@ void Simulation::run()
     restoreOutputs();
 
   try {
+    std::string stopReason;
     // The load steps (docs/theory.md §"Load steps"), from the first, or from the checkpoint's
     // (resume_): each step after the first starts from the last mesh and contact state of the
     // step before, whose r_T becomes the friction history. A restart continues a step from the
@@ -778,18 +807,35 @@ void Simulation::run()
       stepFirstCycle_ = continues ? resume_.stepFirstCycle : lastCycle_ + 1;
       adapt::AdaptiveLoop& loop = step == 0 ? *loop_ : *laterStepLoop_;
       if (continues)
-        loop.run(*this, firstCycle - stepFirstCycle_, std::move(marked), stepFirstCycle_);
+        stopReason = loop.run(*this, firstCycle - stepFirstCycle_, std::move(marked), stepFirstCycle_);
       else
-        loop.run(*this, 0, {}, stepFirstCycle_);
+        stopReason = loop.run(*this, 0, {}, stepFirstCycle_);
       // The next step can start from here: a checkpoint of the step's last cycle (the loop
       // writes none for the cycle it stops at).
       if (step + 1 < loadSteps_.numSteps())
         timedCheckpoint(lastCycle_, {}, true);
     }
+    // Why the run stopped, and with accuracy targets or a time budget whether the targets were
+    // met (docs/adaptivity.md "Accuracy targets and a time budget").
+    auto& stop = summary_->json()["stop"];
+    stop = {{"reason", stopReason}};
+    std::string outcome;
+    if (adaptivity_.hasQuantityTargets() || adaptivity_.timeBudget > 0.0) {
+      const bool met = stopReason.rfind("accuracy targets met", 0) == 0;
+      const bool budget = stopReason.rfind("time budget", 0) == 0;
+      stop["accuracy_targets_met"] = adaptivity_.hasQuantityTargets() ? nlohmann::ordered_json(met)
+                                                                       : nlohmann::ordered_json(nullptr);
+      stop["time_budget_reached"] = budget;
+      outcome = met ? " (accuracy targets met)"
+                    : budget ? (adaptivity_.hasQuantityTargets()
+                                    ? " (best within the time budget; accuracy targets not met)"
+                                    : " (best within the time budget)")
+                             : (adaptivity_.hasQuantityTargets() ? " (accuracy targets not met)" : "");
+    }
     // A scene whose contact could not be solved is not "converged".
     summary_->setConverged(solved_);
     summary_->write();
-    progress_.message("done: " + output_.directory + "/summary.json");
+    progress_.message("done" + outcome + ": " + output_.directory + "/summary.json");
   } catch (const core::ConvergenceError& e) {
     // Collective (the active-set decision is global): every rank gets here. The steps before
     // are in summary.json; the failed step is named.

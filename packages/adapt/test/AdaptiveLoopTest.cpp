@@ -29,6 +29,7 @@
 #include <sc/adapt/AdaptiveLoop.hpp>
 #include <sc/adapt/AdaptiveProblem.hpp>
 #include <sc/adapt/AdaptivitySettings.hpp>
+#include <sc/adapt/QuantityError.hpp>
 #include <sc/core/Error.hpp>
 
 namespace {
@@ -128,6 +129,13 @@ public:
       return squareIntegral(p, q, f_.valueOn(p, right), f_.valueOn(q, right));
     };
     est.norm = std::sqrt(piece(0.0, f_.a, false) + piece(f_.a, 1.0, true));
+    // A quantity with an accuracy target: ‖f_h‖² = Σ_T |T| f_T², with its estimated error from
+    // the history of the cycles (QuantityError.hpp), under the target name "force".
+    double q = 0.0;
+    for (int e = 0; e < numElements(); ++e)
+      q += (x_[e + 1] - x_[e]) * mean_[e] * mean_[e];
+    history.push_back({static_cast<double>(est.dofs), est.eta, q});
+    est.quantities.push_back({"force", q, sc::adapt::estimateQuantityError(history)});
     last_ = est;
     return est;
   }
@@ -172,6 +180,7 @@ public:
   std::map<int, CycleRecord> records;
   std::map<int, std::pair<std::vector<double>, std::vector<int>>> checkpoints;
   bool provideEstimate = true;
+  std::vector<sc::adapt::QuantitySample> history;  ///< of ‖f_h‖²
   double bytesPerDof = 0.0;  ///< > 0: forecast the next mesh against limitBytes
   double limitBytes = 0.0;
 
@@ -342,6 +351,53 @@ TEUCHOS_UNIT_TEST(AdaptiveLoop, NextMeshForecastStopsTheRun)
   TEST_EQUALITY(problem.records.at(4).marking.elements.size(), 0u);
   TEST_EQUALITY(problem.checkpoints.count(4), 0u);
   TEST_EQUALITY(problem.checkpoints.count(3), 1u);
+}
+
+// An accuracy target on a quantity: f(x) = x, uniform meshes of h = 2^{−c}, q = ‖f_h‖² =
+// 1/3 − h²/12 (exact: the means are the midpoint values) and η = h/√12, so q_{c−1} − q_c =
+// (8² − 1)h²/12 for the oldest cycle of the window, c − 3, with η_{c−3} − η_c = 7η_c: the
+// estimate is 1.5 · 9h²/12 (QuantityError.hpp, window 3, safety factor 1.5; 1 + 2³ times the
+// true error h²/12 from that pair, as for any quantity converging like η² under uniform
+// refinement), relative 3.375 h² / (1 − h²/4) to q. Target 1e-3: first met at c = 6 (8.24e-4;
+// c = 5 gives 3.3e-3); after cycle 3 (window of 3 cycles: 0, 1, 2) 3.375/64/(1 − 1/256).
+TEUCHOS_UNIT_TEST(AdaptiveLoop, AccuracyTargetOnAQuantity)
+{
+  PiecewiseConstantProblem problem({1.0, 0.0, 1.0 / 3.0}, PiecewiseConstantProblem::uniformMesh(1));
+  auto s = settings("Maximum", 20);
+  s.targetForceError = 1e-3;
+  sc::adapt::AdaptiveLoop loop(s, comm());
+  const std::string reason = loop.run(problem);
+  out << reason << "\n";
+  TEST_ASSERT(reason.rfind("accuracy targets met (estimated relative errors): force 8.24e-04 <= 0.001", 0) == 0);
+  TEST_EQUALITY(problem.records.rbegin()->first, 6);
+  const double h2 = std::ldexp(1.0, -12);
+  TEST_FLOATING_EQUALITY(problem.history.back().value, 1.0 / 3.0 - h2 / 12.0, 1e-12);
+  // Stopped by Cycles first: the unmet target is named.
+  PiecewiseConstantProblem early({1.0, 0.0, 1.0 / 3.0}, PiecewiseConstantProblem::uniformMesh(1));
+  s.cycles = 3;
+  sc::adapt::AdaptiveLoop short3(s, comm());
+  const std::string r3 = short3.run(early);
+  out << r3 << "\n";
+  TEST_ASSERT(r3.rfind("Cycles = 3 reached; accuracy targets not met (estimated relative errors): "
+                       "force 5.29e-02 > 0.001",
+                       0) == 0);
+}
+
+// A time budget that no cycle fits: the run stops after cycle 0 (the best within the budget),
+// saying why; no checkpoint is written for it.
+TEUCHOS_UNIT_TEST(AdaptiveLoop, TimeBudgetStopsBeforeTheNextCycle)
+{
+  PiecewiseConstantProblem problem({}, PiecewiseConstantProblem::uniformMesh(8));
+  auto s = settings("Dorfler", 10);
+  s.timeBudget = 1e-12;
+  sc::adapt::AdaptiveLoop loop(s, comm());
+  const std::string reason = loop.run(problem);
+  out << reason << "\n";
+  TEST_ASSERT(reason.rfind("time budget: the next cycle would end at about ", 0) == 0);
+  TEST_ASSERT(reason.find("beyond Time budget = 1e-12 s; this cycle is the best within the budget") !=
+              std::string::npos);
+  TEST_EQUALITY(problem.records.rbegin()->first, 0);
+  TEST_EQUALITY(problem.checkpoints.size(), 0u);
 }
 
 // A problem without an estimate: Uniform marking runs (no indicators needed; Target error is

@@ -118,6 +118,69 @@ TEUCHOS_UNIT_TEST(StopCriteria, CyclesDofsTarget)
   TEST_THROW(sc::adapt::StopCriteria bad(s), sc::core::InputError);
 }
 
+// Accuracy targets (docs/adaptivity.md "Accuracy targets and a time budget"): all given targets
+// must be met by estimated relative errors; a quantity without an estimate does not meet its
+// target; out-of-range values name the key.
+TEUCHOS_UNIT_TEST(StopCriteria, AccuracyTargetsAndTimeBudget)
+{
+  // The settings have no defaults of their own (the deck's are in getValidParameters).
+  const auto valid = [] {
+    sc::adapt::AdaptivitySettings v;
+    v.cycles = 50;
+    v.maxDofs = 1000000;
+    return v;
+  };
+  auto s = valid();
+  s.targetForceError = 1e-3;
+  s.targetWidthError = 1e-2;
+  sc::adapt::StopCriteria stop(s);
+  using Q = sc::adapt::QuantityEstimate;
+  // force 0.05/100 = 5e-4 ≤ 1e-3, width 0.002/0.1 = 2e-2 > 1e-2.
+  std::vector<Q> q = {{"force", -100.0, 0.05}, {"width", 0.1, 0.002}, {"pressure", 900.0, 100.0}};
+  auto status = stop.targets(q);
+  TEST_EQUALITY(status.size(), 2u);
+  TEST_ASSERT(status[0].met && !status[1].met);
+  TEST_FLOATING_EQUALITY(status[0].relativeError, 5e-4, 1e-14);
+  TEST_EQUALITY(status[1].key, "Adaptivity/Target width error");
+  TEST_EQUALITY(stop.targetsReason(q), "");
+  TEST_EQUALITY(stop.unmetTargets(q),
+                "; accuracy targets not met (estimated relative errors): width 2.00e-02 > 0.01");
+  q[1].error = 0.0009;
+  TEST_EQUALITY(stop.targetsReason(q), "accuracy targets met (estimated relative errors): force "
+                                       "5.00e-04 <= 0.001, width 9.00e-03 <= 0.01");
+  q[0].error = -1.0;  // no estimate yet
+  TEST_EQUALITY(stop.targetsReason(q), "");
+  TEST_EQUALITY(stop.unmetTargets(q),
+                "; accuracy targets not met (estimated relative errors): force not estimated yet");
+  // Time budget: 10 s; 7 s elapsed, next cycle forecast 2.9 s: fits; 3.1 s: stops.
+  s.timeBudget = 10.0;
+  sc::adapt::StopCriteria budget(s);
+  TEST_EQUALITY(budget.budgetReason(7.0, 2.9, q), "");
+  const std::string r = budget.budgetReason(7.0, 3.1, q);
+  out << r << "\n";
+  TEST_ASSERT(r.rfind("time budget: the next cycle would end at about 10.1 s", 0) == 0);
+  TEST_ASSERT(r.find("force not estimated yet") != std::string::npos);
+  // No targets, no budget: nothing to say.
+  sc::adapt::StopCriteria none(valid());
+  TEST_EQUALITY(none.targetsReason(q), "");
+  TEST_EQUALITY(none.unmetTargets(q), "");
+  TEST_EQUALITY(none.budgetReason(1e9, 1e9, q), "");
+  // Out of range: the key and the valid range.
+  for (double bad : {-0.1, 1.5}) {
+    auto b = valid();
+    b.targetPressureError = bad;
+    try {
+      sc::adapt::StopCriteria x(b);
+      TEST_ASSERT(false);
+    } catch (const sc::core::InputError& e) {
+      TEST_ASSERT(std::string(e.what()).find("'Adaptivity/Target pressure error'") != std::string::npos);
+    }
+  }
+  auto b = valid();
+  b.timeBudget = -1.0;
+  TEST_THROW(sc::adapt::StopCriteria x(b), sc::core::InputError);
+}
+
 // A step whose next mesh would exceed the memory limit stops the run (docs/mesh.md "Resource
 // limits").
 TEUCHOS_UNIT_TEST(StopCriteria, NextMeshAboveTheMemoryLimit)

@@ -1,6 +1,10 @@
 #include "sc/adapt/AdaptiveLoop.hpp"
 
+#include <algorithm>
 #include <optional>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_Time.hpp>
 
 #include <sc/adapt/Marker.hpp>
 #include <sc/adapt/StopCriteria.hpp>
@@ -14,7 +18,8 @@ AdaptiveLoop::AdaptiveLoop(const AdaptivitySettings& settings,
                            Teuchos::RCP<const Teuchos::Comm<int>> comm, core::Progress* progress,
                            core::PhaseTimers* timers)
   : settings_(settings), comm_(std::move(comm)), progress_(progress), timers_(timers),
-    marker_(createMarker(settings)), stop_(std::make_unique<StopCriteria>(settings))
+    marker_(createMarker(settings)), stop_(std::make_unique<StopCriteria>(settings)),
+    startTime_(Teuchos::Time::wallTime())
 {
   SC_THROW_IF(comm_.is_null(), core::InternalError, "AdaptiveLoop needs a communicator");
 }
@@ -29,6 +34,14 @@ std::string AdaptiveLoop::run(AdaptiveProblem& problem, int firstCycle,
   marking.uniform = !settings_.needsIndicators();
   if (!marking.uniform)
     marking.elements = std::move(markedBeforeFirstCycle);
+  // The time budget: rank 0's clock, so that every rank takes the same decision.
+  const auto now = [this] {
+    double t = Teuchos::Time::wallTime();
+    Teuchos::broadcast<int, double>(*comm_, 0, &t);
+    return t;
+  };
+  double previousDecision = now();
+  long long previousDofs = 0;
   for (int cycle = firstCycle;; ++cycle) {
     const int global = cycle + cycleOffset;  // the number the problem's steps see
     if (progress_)
@@ -39,13 +52,33 @@ std::string AdaptiveLoop::run(AdaptiveProblem& problem, int firstCycle,
     const CycleEstimate estimate = problem.estimate(global);
     std::string reason = stop_->reason(cycle, estimate.dofs, estimate.available ? estimate.eta : -1.0,
                                        estimate.available ? estimate.norm : -1.0);
+    // Accuracy targets (all met: stop), or say which are not met when stopping for another reason.
+    if (reason.empty())
+      reason = stop_->targetsReason(estimate.quantities);
+    else
+      reason += stop_->unmetTargets(estimate.quantities);
     marking = Marking();
     marking.uniform = !settings_.needsIndicators();
     if (reason.empty()) {
       marking = mark(estimate);
       const NextMeshForecast next = problem.forecastNextMesh(marking);
       reason = stop_->memoryReason(next.dofs, next.bytes, next.limitBytes, next.limitSource);
+      if (!reason.empty())
+        reason += stop_->unmetTargets(estimate.quantities);
     }
+    // The time budget: the next cycle is forecast from this one's time (since the last
+    // decision: this cycle's refine, solve, estimate and the previous cycle's output) scaled by
+    // the growth of the DOFs over this cycle.
+    const double decision = now();
+    if (reason.empty()) {
+      const double growth = previousDofs > 0 && estimate.dofs > previousDofs
+                                ? static_cast<double>(estimate.dofs) / static_cast<double>(previousDofs)
+                                : 1.0;
+      reason = stop_->budgetReason(decision - startTime_, (decision - previousDecision) * growth,
+                                   estimate.quantities);
+    }
+    previousDecision = decision;
+    previousDofs = estimate.dofs;
     if (!reason.empty())
       marking.elements.clear();  // nothing is refined after the last cycle
     problem.output(global, marking, reason);

@@ -4,8 +4,8 @@
 //   for cycle = first, first + 1, ...:
 //     refine(marking of the previous cycle)          (not in cycle 0)
 //     solve(cycle); estimate(cycle)
-//     stop criteria: Cycles, Max DOFs, Target error
-//     if going on: mark; the next mesh's memory forecast (may stop the run)
+//     stop criteria: Cycles, Max DOFs, Target error, the accuracy targets
+//     if going on: mark; the next mesh's memory forecast, the time budget (may stop the run)
 //     output(cycle, marking, stop reason)
 //     if going on: checkpoint(cycle, marking), else return the stop reason
 //
@@ -70,6 +70,7 @@ private:
   core::PhaseTimers* timers_;
   std::unique_ptr<Marker> marker_;
   std::unique_ptr<StopCriteria> stop_;
+  double startTime_;  ///< wall time at construction: `Time budget` counts from here
 };
 
 }  // namespace sc::adapt

@@ -29,6 +29,31 @@ Teuchos::RCP<const Teuchos::ParameterList> AdaptivitySettings::getValidParameter
                       "Stop when η ≤ Target error · ‖A^{1/2}σ_h‖ (η relative to the energy norm "
                       "of the discrete stress, docs/theory.md); 0: never.",
                       0.0, false, core::kInfinity, false);
+    // Accuracy as the user's input (docs/adaptivity.md "Accuracy targets and a time budget").
+    const std::string relative =
+        " relative to the quantity, from the error bars of summary.json (contact.estimated_error, "
+        "docs/output.md); the run stops at the first cycle that meets every target given; 0: no "
+        "target. Scenes with contact only.";
+    core::declareReal(*pl, "Target force error", 0.0,
+                      "Target on the estimated error of the contact force |F|" + relative, 0.0,
+                      false, 1.0, false);
+    core::declareReal(*pl, "Target width error", 0.0,
+                      "Target on the estimated error of the contact half-width (2D) or radius "
+                      "(3D)" + relative,
+                      0.0, false, 1.0, false);
+    core::declareReal(*pl, "Target pressure error", 0.0,
+                      "Target on the estimated error of the peak contact pressure" + relative, 0.0,
+                      false, 1.0, false);
+    core::declareReal(*pl, "Target stick width error", 0.0,
+                      "Target on the estimated error of the stick zone's half-width (2D) or "
+                      "radius (3D)" + relative + " Needs friction.",
+                      0.0, false, 1.0, false);
+    core::declareReal(*pl, "Time budget", 0.0,
+                      "Wall-time budget of the run in seconds, counted from the start of the run "
+                      "(after reading the deck): no cycle is started that the previous cycle's "
+                      "time, scaled by the growth of the DOFs, forecasts to end beyond it; the run "
+                      "then stops with the best cycle it reached. 0: no budget.",
+                      0.0, false, core::kInfinity, false);
     return pl;
   }();
   return valid;
@@ -42,6 +67,11 @@ AdaptivitySettings AdaptivitySettings::fromParameters(const Teuchos::ParameterLi
   s.bulkParameter = pl.get<double>("Bulk parameter");
   s.maxDofs = pl.get<int>("Max DOFs");
   s.targetError = pl.get<double>("Target error");
+  s.targetForceError = pl.get<double>("Target force error");
+  s.targetWidthError = pl.get<double>("Target width error");
+  s.targetPressureError = pl.get<double>("Target pressure error");
+  s.targetStickError = pl.get<double>("Target stick width error");
+  s.timeBudget = pl.get<double>("Time budget");
   return s;
 }
 
