@@ -22,6 +22,8 @@ AdaptiveLoop::AdaptiveLoop(const AdaptivitySettings& settings,
     startTime_(Teuchos::Time::wallTime())
 {
   SC_THROW_IF(comm_.is_null(), core::InternalError, "AdaptiveLoop needs a communicator");
+  // Rank 0's clock, as for every time of the budget: each rank's decision must be the same.
+  Teuchos::broadcast<int, double>(*comm_, 0, &startTime_);
 }
 
 AdaptiveLoop::~AdaptiveLoop() = default;

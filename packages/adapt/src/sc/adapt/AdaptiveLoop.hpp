@@ -38,7 +38,7 @@ class AdaptiveLoop {
 public:
   /// Throws core::InputError for settings out of range. `progress` (cycle numbers, the marking
   /// and stop lines) and `timers` (the "mark" phase) are optional and borrowed: they must
-  /// outlive the loop.
+  /// outlive the loop. Collective (rank 0's clock starts the time budget).
   AdaptiveLoop(const AdaptivitySettings& settings, Teuchos::RCP<const Teuchos::Comm<int>> comm,
                core::Progress* progress = nullptr, core::PhaseTimers* timers = nullptr);
   ~AdaptiveLoop();
@@ -70,7 +70,7 @@ private:
   core::PhaseTimers* timers_;
   std::unique_ptr<Marker> marker_;
   std::unique_ptr<StopCriteria> stop_;
-  double startTime_;  ///< wall time at construction: `Time budget` counts from here
+  double startTime_;  ///< rank 0's wall time at construction: `Time budget` counts from here
 };
 
 }  // namespace sc::adapt
