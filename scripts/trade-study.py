@@ -25,6 +25,7 @@ import itertools
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -48,7 +49,12 @@ SOLVER = {
     "mumps": ["Linear Solver/Type=MUMPS"],
     "krylov": ["Linear Solver/Type=Iterative", "Linear Solver/Iterative/Tolerance=1e-8"],
     "krylov6": ["Linear Solver/Type=Iterative", "Linear Solver/Iterative/Tolerance=1e-6"],
+    "multigrid": ["Linear Solver/Type=Iterative", "Linear Solver/Iterative/Stress block=Multigrid"],
 }
+# Contact/Newton/Stopping = Balanced (docs/theory.md "Solves balanced with the discretisation
+# error"): a run labelled X_balanced is X with the balanced Krylov stop; the report sets the two
+# side by side, cycle by cycle.
+BALANCED = ["Contact/Newton/Stopping=Balanced"]
 
 # Quantities read from a cycle record of summary.json. Contact: the load along the obstacle
 # normal (|force| component of largest size), the zone's half-width / radius from its area
@@ -111,7 +117,10 @@ def hertz2d(deck, extra, reference_values=None, quantities=("load", "half_width"
         "cycles": {"uniform": 2, "default": 12},
         "grid": grid(**HERTZ2D_GRID) + [("k1_th0.5_straight", DEGREE["k1"] + marking(0.5) + GEOMETRY["straight"]),
                                         ("k1_th0.5_rk", DEGREE["k1"] + marking(0.5) + RECONSTRUCTION["rk"]),
-                                        ("k1_th0.5_krylov", DEGREE["k1"] + marking(0.5) + SOLVER["krylov"])],
+                                        ("k1_th0.5_krylov", DEGREE["k1"] + marking(0.5) + SOLVER["krylov"]),
+                                        ("k1_th0.5_krylov_balanced", DEGREE["k1"] + marking(0.5) + SOLVER["krylov"] + BALANCED),
+                                        ("k1_th0.5_multigrid", DEGREE["k1"] + marking(0.5) + SOLVER["multigrid"]),
+                                        ("k1_th0.5_multigrid_balanced", DEGREE["k1"] + marking(0.5) + SOLVER["multigrid"] + BALANCED)],
         "tiny": [("k1_uniform", DEGREE["k1"] + marking("uniform"))],
         # The finest discretisation of the grid's family, run first: k = 2, Dörfler 0.5, more cycles.
         "reference": {"sets": DEGREE["k2"] + marking(0.5) + ["Adaptivity/Cycles=22"],
@@ -260,6 +269,8 @@ def main():
     ap.add_argument("--cycles", type=int, help="override the adaptive cycles of every grid run")
     ap.add_argument("--set", action="append", default=[], dest="extra",
                     help="an extra --set for every run (e.g. a coarser initial mesh)")
+    ap.add_argument("--runs", help="only the grid runs whose label matches this regular expression "
+                    "(the shipped deck's run is labelled 'shipped'); the reference run is made as always")
     ap.add_argument("--timeout", type=float, default=600.0, help="seconds per run")
     ap.add_argument("--no-plot", action="store_true")
     ap.add_argument("--summarize", action="store_true",
@@ -313,6 +324,8 @@ def main():
 
     runs = list(scene["tiny"] if tiny else scene["grid"])
     runs.append(("shipped", []))  # the deck as shipped (its own cycles and marking)
+    if args.runs:
+        runs = [r for r in runs if re.search(args.runs, r[0])]
     rows = []
     for label, sets in runs:
         full = base + sets
@@ -362,9 +375,39 @@ def first_time_within(rows, q, target):
     return None
 
 
+def balanced_tables(quantities, rows):
+    """Each run X that has a run X_balanced: per cycle, the error of each quantity, Newton steps,
+    Krylov iterations and seconds of both, and the totals."""
+    labels = list(dict.fromkeys(r["run"] for r in rows))
+    for label in labels:
+        if not label.endswith("_balanced") or label[:-len("_balanced")] not in labels:
+            continue
+        fixed = {r["cycle"]: r for r in rows if r["run"] == label[:-len("_balanced")]}
+        bal = {r["cycle"]: r for r in rows if r["run"] == label}
+        print("balanced against fixed: %s (fixed | balanced)" % label)
+        print("  cycle   DOFs fixed|bal  " + "  ".join("%-19s" % (q + " error") for q in quantities)
+              + "  Newton  Krylov     seconds")
+        total = {"fixed": [0, 0], "bal": [0, 0]}
+        for c in sorted(set(fixed) & set(bal)):
+            f, b = fixed[c], bal[c]
+            for key, r in (("fixed", f), ("bal", b)):
+                total[key][0] += int(r["newton_iterations"] or 0)
+                total[key][1] += int(r["krylov_iterations"] or 0)
+            print("  %5d %6d|%-6d  " % (c, f["dofs"], b["dofs"])
+                  + "  ".join("%.2e|%.2e" % (f[q + "_error"], b[q + "_error"]) for q in quantities)
+                  + "  %3s|%-3s %4s|%-5s %5.2f|%.2f" % (f["newton_iterations"], b["newton_iterations"],
+                                                        f["krylov_iterations"], b["krylov_iterations"],
+                                                        f["seconds"], b["seconds"]))
+        last = max(set(fixed) & set(bal))
+        print("  totals to cycle %d: Newton %d|%d, Krylov %d|%d, seconds %.2f|%.2f"
+              % (last, total["fixed"][0], total["bal"][0], total["fixed"][1], total["bal"][1],
+                 fixed[last]["seconds"], bal[last]["seconds"]))
+
+
 def report(scene, quantities, rows, outdir, plots):
     """Each quantity's front; the time to reach 1% and 0.1%: the front's, and the shipped deck's
     (its first cycle within the target) with its excess over the front."""
+    balanced_tables(quantities, rows)
     for q in quantities:
         pts = [(r["seconds"], r[q + "_error"], "%s/c%d" % (r["run"], r["cycle"])) for r in rows if r[q + "_error"] > 0]
         front = pareto(pts)

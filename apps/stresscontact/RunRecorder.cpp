@@ -71,6 +71,11 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
                                {"max_pressure", h->reference.maxPressure},
                                {d == 2 ? "half_width_ratio" : "radius_ratio", h->zoneSizeRatio},
                                {"max_pressure_ratio", h->maxPressureRatio}};
+    // Contact/Newton/Stopping = Balanced (contact/BalancedStopping.hpp), when the rule applied.
+    if (st.balancedBound > 0.0)
+      c["contact"]["balanced"] = {{"bound", st.balancedBound},
+                                  {"krylov_tolerance", st.krylovTolerance},
+                                  {"algebraic_error", st.algebraicError}};
     c["nonlinear_iterations"] = st.newtonIterations;
     std::ostringstream os;
     os << "force (" << force[0] << ", " << force[1] << (d == 3 ? ", " + std::to_string(force[2]) : "")

@@ -73,8 +73,20 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
       core::BoundaryConditions::fromParameters(params_->sublist("Boundary Conditions"), dim);
   bodyForce_ = core::BodyForce::fromParameters(params_->sublist("Body Force"), problem_);
   // Contact data is read (and checked against the dimension) only if the scene has contact.
-  if (boundaryConditions_.hasContact())
+  if (boundaryConditions_.hasContact()) {
     contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
+    balancedStopping_ = contact::BalancedStopping::fromParameters(params_->sublist("Contact").sublist("Newton"));
+    // The balanced rule sets Krylov tolerances: with a direct solver it would change nothing (the
+    // Newton loop stops on a settled active set by either rule), so it is refused, not ignored.
+    const std::string type = params_->sublist("Linear Solver").get<std::string>("Type");
+    SC_THROW_IF(balancedStopping_.isBalanced() && type != "Iterative", core::InputError,
+                "'Contact/Newton/Stopping' = 'Balanced' balances the Krylov solves of the contact "
+                "Newton steps with η_CF, but 'Linear Solver/Type' = '"
+                    << type << "' gives exact (direct) solves, which the rule would not change. "
+                    << "Valid: 'Linear Solver/Type' = 'Iterative' with 'Balanced', or "
+                    << "'Contact/Newton/Stopping' = 'Fixed' (docs/theory.md §\"Solves balanced "
+                    << "with the discretisation error\").");
+  }
   // A large Coulomb coefficient inflates η's friction part, not the solution (docs/theory.md).
   if (const std::string w = estimator::largeFrictionWarning(contact_);
       boundaryConditions_.hasContact() && !w.empty()) {
@@ -191,6 +203,7 @@ void Simulation::applyLoadStep(int step)
   if (!boundaryConditions_.hasContact())
     return;
   contact_ = deckContact_;
+  balancedStopping_.setDiscretisationError(-1.0);  // η of another load is not this step's
   const auto shift = loadSteps_.obstacleDisplacementAt(step, dim);
   for (auto* point : {&contact_.obstaclePoint, &contact_.obstacleCenter})
     for (std::size_t i = 0; i < point->size() && i < shift.size(); ++i)
@@ -248,6 +261,8 @@ void Simulation::setupMesh()
     contactProblem_ = std::make_unique<contact::ContactProblem>(
         material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact), comm_);
     contactProblem_->setContactHoldsBody(contactHoldsBody);
+    if (balancedStopping_.isBalanced())
+      contactProblem_->setBalancedStopping(&balancedStopping_);
     contactProblem_->setStepCallback([this](int step, long long changes, double seconds) {
       std::ostringstream os;
       os << "Newton step " << step << ": " << changes << " points changed state";
@@ -465,6 +480,9 @@ void Simulation::solveContact()
   os << st.newtonIterations << " Newton steps, changes per step:";
   for (int c : st.changesPerIteration)
     os << " " << c;
+  if (st.balancedBound > 0.0)
+    os << "; balanced Krylov stop: tolerance " << st.krylovTolerance << ", algebraic error "
+       << st.algebraicError << " (bound gamma eta = " << st.balancedBound << ")";
   progress_.report("contact solve", os.str());
   solved_ = true;
   warnIfNoContact();
@@ -536,6 +554,8 @@ adapt::CycleEstimate Simulation::estimate(int /*cycle*/)
     e.available = true;
     e.eta = estimate->total();
     e.norm = estimate->stressEnergyNorm;
+    // The next cycle's balanced Krylov stop (contact/BalancedStopping.hpp).
+    balancedStopping_.setDiscretisationError(e.eta, e.norm > 0.0 ? e.eta / e.norm : 0.0);
     e.ownedElements = space_->ownedElements();
     e.indicators = estimate->indicators;
     // The error bars from the history of the earlier cycles (summary.json's records), and the

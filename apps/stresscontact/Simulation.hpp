@@ -22,6 +22,7 @@
 
 #include <sc/adapt/AdaptiveProblem.hpp>
 #include <sc/adapt/AdaptivitySettings.hpp>
+#include <sc/contact/BalancedStopping.hpp>
 #include <sc/contact/ContactSettings.hpp>
 #include <sc/core/LoadSteps.hpp>
 #include <sc/core/Progress.hpp>
@@ -241,6 +242,9 @@ private:
   // Contact (a boundary of Type Contact): the problem that lives across the cycles, with the
   // points and their transfer to the next mesh and load step (null without contact).
   std::unique_ptr<contact::ContactProblem> contactProblem_;
+  /// Contact/Newton/Stopping (contact/BalancedStopping.hpp): kept across cycles, it carries η of
+  /// the cycle before (none in the first cycle of a run, a restart or a load step).
+  contact::BalancedStopping balancedStopping_;
 
   std::unique_ptr<io::RunSummary> summary_;
   std::unique_ptr<RunRecorder> recorder_;  ///< records results_ into summary_ and the CSVs

@@ -31,6 +31,7 @@
 #include <Tpetra_CrsMatrix_fwd.hpp>
 #include <Tpetra_MultiVector_fwd.hpp>
 
+#include <sc/contact/BalancedStopping.hpp>
 #include <sc/contact/ContactSettings.hpp>
 #include <sc/core/ProblemData.hpp>
 
@@ -54,6 +55,12 @@ struct ContactStatistics {
   bool converged = false;
   std::vector<int> changesPerIteration;
   std::vector<int> linearIterationsPerStep;  ///< Krylov iterations per Newton step (Krylov solvers)
+  /// Contact/Newton/Stopping = Balanced, last Newton step (BalancedStopping.hpp): the estimated
+  /// algebraic error Δ (−1: accepted at the fixed tolerance before a Δ, or the rule did not apply),
+  /// the relative tolerance of the accepted stage, and the bound γ η (0: the rule did not apply).
+  double algebraicError = -1.0;
+  double krylovTolerance = 0.0;
+  double balancedBound = 0.0;
 };
 
 /// Throws InputError naming 'Discretization/Degree' if contact at this degree and dimension is
@@ -78,7 +85,7 @@ public:
 
   /// Valid "Contact/Newton" keys (sublist of Contact): Maximum iterations, Penalty factor,
   /// Maximum remedies, 3D slip linearisation, Coulomb method, Maximum fixed-point iterations,
-  /// Fixed-point tolerance.
+  /// Fixed-point tolerance, Stopping, Balance fraction (BalancedStopping.hpp).
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
 
   /// Points on the faces of `contactBoundaries` owned by this rank; the Newton limits and
@@ -118,6 +125,10 @@ public:
   using StepCallback = std::function<void(int step, long long changes, double seconds)>;
   void setStepCallback(StepCallback callback) { stepCallback_ = std::move(callback); }
 
+  /// Contact/Newton/Stopping = Balanced: the Krylov solves stop by this rule (borrowed, kept by
+  /// the caller across cycles: it carries η and the stage tolerance; null: the fixed tolerance).
+  void setBalancedStopping(BalancedStopping* stopping) { balanced_ = stopping; }
+
   /// The contact alone holds the body along the obstacle's normal (no Displacement part, and
   /// Symmetry parts normal to every other axis: assembly::checkLoadsAndSupports). Without a
   /// point in contact the system is then singular, so a Newton start with none puts the points
@@ -139,6 +150,11 @@ private:
   int updateState(bool allowFlipRemedy);
   void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
                       MultiVector& x);
+  /// One Newton step's linear solve with the solver's operator, by the fixed or the balanced rule
+  /// (`energy`: its σ block is the compliance in the operator's unknowns). Returns the Krylov
+  /// iterations.
+  int linearSolve(solvers::LinearSolver& solver, const MultiVector& rhs, MultiVector& x,
+                  const CrsMatrix& energy);
   double trescaBound(const ContactPoint& p) const;
   /// setContactHoldsBody: the start with the nearest points in contact, and the check that a
   /// step has some point in contact (collective).
@@ -192,6 +208,7 @@ private:
   ContactStatistics stats_;
   StepCallback stepCallback_;
   bool holdsBody_ = false;
+  BalancedStopping* balanced_ = nullptr;
   double meshSize_ = 0.0;  ///< the diagonal of the mesh's bounding box
 };
 

@@ -39,6 +39,7 @@ void ContactProblem::setUp(const disc::MixedElasticitySpace& space, const Contac
 {
   solver_ = std::make_unique<ActiveSetSolver>(space, settings, material_, boundaries_, comm_);
   solver_->setContactHoldsBody(holdsBody_);
+  solver_->setBalancedStopping(balanced_);
   if (callback_)
     solver_->setStepCallback(callback_);
 }

@@ -42,6 +42,8 @@ public:
   /// See ActiveSetSolver::setContactHoldsBody and setStepCallback; kept for every cycle.
   void setContactHoldsBody(bool holds) { holdsBody_ = holds; }
   void setStepCallback(ActiveSetSolver::StepCallback callback) { callback_ = std::move(callback); }
+  /// See ActiveSetSolver::setBalancedStopping (borrowed); kept for every cycle.
+  void setBalancedStopping(BalancedStopping* stopping) { balanced_ = stopping; }
 
   /// The mesh `previous` was refined into `next` by `step`: the points' state goes to `next`
   /// through the parents of its boundary faces (taken now, while the refiner holds the step).
@@ -76,6 +78,7 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   bool holdsBody_ = false;
   ActiveSetSolver::StepCallback callback_;
+  BalancedStopping* balanced_ = nullptr;
   std::unique_ptr<ActiveSetSolver> solver_;
   std::vector<ContactPoint> points_;
   /// For every face of the current mesh, the boundary face of the points' mesh that contains it

@@ -262,6 +262,14 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
   ++stats_.preconditionerSetups;
 }
 
+bool IterativeSolver::applyPreconditioner(const MultiVector& r, MultiVector& z) const
+{
+  if (impl_->prec.is_null())
+    return false;
+  impl_->prec->apply(r, z);
+  return true;
+}
+
 void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
 {
   Impl& m = *impl_;

@@ -57,6 +57,8 @@ public:
   ~IterativeSolver() override;
   std::string name() const override;
   bool isIterative() const override { return true; }
+  double relativeTolerance() const override { return options_.tolerance; }
+  void setRelativeTolerance(double tolerance) override { options_.tolerance = tolerance; }
 
   /// Krylov methods and stress-block solvers this build offers.
   static const std::vector<std::string>& methods();
@@ -65,6 +67,7 @@ public:
 protected:
   void operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bool symmetric) override;
   void solveOperator(const MultiVector& b, MultiVector& x) override;
+  bool applyPreconditioner(const MultiVector& r, MultiVector& z) const override;
 
 private:
   std::string method() const;

@@ -14,6 +14,26 @@
 
 namespace sc::solvers {
 
+bool LinearSolver::estimateError(const MultiVector& b, const MultiVector& x, MultiVector& error) const
+{
+  if (working_.is_null())
+    return false;
+  // The working system's residual r̃ = D (b − A x) = D b − (D A D)(D⁻¹ x); error = D P̃⁻¹ r̃.
+  MultiVector r(b, Teuchos::Copy);
+  A_->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+  if (!D_.is_null())
+    for (size_t j = 0; j < r.getNumVectors(); ++j)
+      r.getVectorNonConst(j)->elementWiseMultiply(1.0, *D_, *r.getVector(j), 0.0);
+  MultiVector z(x.getMap(), x.getNumVectors());
+  if (!applyPreconditioner(r, z))
+    return false;
+  if (!D_.is_null())
+    for (size_t j = 0; j < z.getNumVectors(); ++j)
+      z.getVectorNonConst(j)->elementWiseMultiply(1.0, *D_, *z.getVector(j), 0.0);
+  error.assign(z);
+  return true;
+}
+
 Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source, const Teuchos::RCP<CrsMatrix>& reuse)
 {
   SC_THROW_IF(reuse.get() == &source, sc::core::InternalError,

@@ -108,6 +108,19 @@ public:
   /// The current operator is treated as symmetric (declared symmetric and exploited).
   bool isSymmetric() const { return symmetric_; }
 
+  /// Krylov solvers: the relative residual ‖b − A x‖/‖b‖ a solve reaches (`Linear
+  /// Solver/Iterative/Tolerance` until set here); direct solvers have none (0) and ignore the
+  /// setter. The contact Newton's balanced stopping changes it per solve (contact/BalancedStopping.hpp).
+  virtual double relativeTolerance() const { return 0.0; }
+  virtual void setRelativeTolerance(double /*tolerance*/) {}
+
+  /// Krylov solvers: an approximation of the error x* − x of an approximate solution x of the
+  /// current operator's system, the preconditioner applied to the residual, P⁻¹(b − A x), in A's
+  /// unknowns (the scaling D undone). With the block preconditioner spectrally equivalent to the
+  /// operator (docs/theory.md §"Linear solvers") it is within a bounded factor of the error.
+  /// Returns false (error untouched) for direct solvers: no preconditioner, and exact solves.
+  bool estimateError(const MultiVector& b, const MultiVector& x, MultiVector& error) const;
+
   /// Largest accepted relative residual of a solve (<= 0: not checked).
   void setMaximumRelativeResidual(double limit) { maxRelativeResidual_ = limit; }
   double maximumRelativeResidual() const { return maxRelativeResidual_; }
@@ -120,6 +133,9 @@ protected:
   virtual void operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bool symmetric) = 0;
   /// Solve the (scaled) system A x = b; x holds the (scaled) initial guess on input.
   virtual void solveOperator(const MultiVector& b, MultiVector& x) = 0;
+
+  /// z = P⁻¹ r with the preconditioner of the working system (false: the solver has none).
+  virtual bool applyPreconditioner(const MultiVector& /*r*/, MultiVector& /*z*/) const { return false; }
 
   /// The operator passed to operatorChanged (null before the first setOperator).
   const Teuchos::RCP<const CrsMatrix>& workingOperator() const { return working_; }
