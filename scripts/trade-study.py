@@ -9,7 +9,7 @@ and Krylov tolerances, ...). One run gives one point per adaptive cycle: the tim
 the process's fixed cost (its wall time less the sum of its cycles' phases) plus the phases of
 cycles 0..i, without `output` and `checkpoint` (field output is switched off in every run; the
 checkpoint is not the problem's work). The true error of each quantity is measured against the
-scene's reference (docs/performance.md "How the error is measured"):
+scene's reference (docs/performance.md "The trade-study command"):
 
 - `exact`: the manufactured solution; the run's own `errors` (summary.json) are the true errors;
 - a number with a named source (the peer values of docs/peer);
@@ -387,21 +387,22 @@ def balanced_tables(quantities, rows):
         print("balanced against fixed: %s (fixed | balanced)" % label)
         print("  cycle   DOFs fixed|bal  " + "  ".join("%-19s" % (q + " error") for q in quantities)
               + "  Newton  Krylov     seconds")
-        total = {"fixed": [0, 0], "bal": [0, 0]}
+        total = {"fixed": [0, 0, 0.0], "bal": [0, 0, 0.0]}
         for c in sorted(set(fixed) & set(bal)):
             f, b = fixed[c], bal[c]
             for key, r in (("fixed", f), ("bal", b)):
                 total[key][0] += int(r["newton_iterations"] or 0)
                 total[key][1] += int(r["krylov_iterations"] or 0)
+                total[key][2] += float(r["phase_solve"] or 0.0)
             print("  %5d %6d|%-6d  " % (c, f["dofs"], b["dofs"])
                   + "  ".join("%.2e|%.2e" % (f[q + "_error"], b[q + "_error"]) for q in quantities)
                   + "  %3s|%-3s %4s|%-5s %5.2f|%.2f" % (f["newton_iterations"], b["newton_iterations"],
                                                         f["krylov_iterations"], b["krylov_iterations"],
                                                         f["seconds"], b["seconds"]))
         last = max(set(fixed) & set(bal))
-        print("  totals to cycle %d: Newton %d|%d, Krylov %d|%d, seconds %.2f|%.2f"
+        print("  totals to cycle %d: Newton %d|%d, Krylov %d|%d, solve phase %.2f|%.2f s, seconds %.2f|%.2f"
               % (last, total["fixed"][0], total["bal"][0], total["fixed"][1], total["bal"][1],
-                 fixed[last]["seconds"], bal[last]["seconds"]))
+                 total["fixed"][2], total["bal"][2], fixed[last]["seconds"], bal[last]["seconds"]))
 
 
 def report(scene, quantities, rows, outdir, plots):
