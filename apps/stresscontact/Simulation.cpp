@@ -208,6 +208,7 @@ void Simulation::applyLoadStep(int step)
   for (auto* point : {&contact_.obstaclePoint, &contact_.obstacleCenter})
     for (std::size_t i = 0; i < point->size() && i < shift.size(); ++i)
       (*point)[i] += shift[i];
+  contact_.obstacleOffset = shift;  // a height function's graph moves as a whole
 }
 
 void Simulation::setupMesh()
@@ -278,6 +279,10 @@ void Simulation::setupMesh()
     assembly::checkNormalFramePartsFlat(
         *mesh_, boundaryConditions_, *mesh::MeshFactory::curvedElements(meshSettings_, *refiner_));
   if (boundaryConditions_.hasContact()) {
+    // The body's size (bounding-box diagonal, a tenth of the miss cap): the height function's
+    // finite-difference steps are fractions of it, for every step and cycle alike.
+    deckContact_.lengthScale = contact::missCap(*mesh_) / 10.0;
+    contact_.lengthScale = deckContact_.lengthScale;
     // Every load step's obstacle position, before anything is written (a step that moves the
     // obstacle off the body, or too deep into it, is an input error of the deck).
     for (int step = loadSteps_.numSteps() - 1; step >= 0; --step) {

@@ -1,7 +1,9 @@
 // The "Contact" settings: the normal is normalised, friction rows only when they can be
 // non-zero, and the one valid list of the package includes the "Newton" sublist of the
 // ActiveSetSolver (a misspelt Newton key is an InputError naming it).
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <Teuchos_UnitTestHarness.hpp>
@@ -126,4 +128,150 @@ TEUCHOS_UNIT_TEST(ContactSettings, IndenterGeometry)
   c.set("Obstacle normal", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 0.0, -1.0)));
   c.set("Obstacle axis", Teuchos::Array<double>());
   TEST_THROW(sc::contact::ContactSettings::fromParameters(c, 3), sc::core::InputError);
+}
+
+// Height function obstacles (docs/contact.md "Height function") against the project's own Plane
+// and Circle/Sphere obstacles (independent code paths: closed forms): a flat h reproduces the
+// plane (the same formulas to rounding), the lower arc of a circle (cap of a sphere) the indenter
+// at points below it, to the finite-difference slope's accuracy (~1e-12).
+namespace {
+
+Teuchos::Array<double> arr(std::initializer_list<double> v) { return Teuchos::Array<double>(v); }
+
+std::unique_ptr<sc::contact::Obstacle> obstacleOf(ParameterList c, int dim)
+{
+  sc::core::validateParameters(c, *sc::contact::ContactSettings::getValidParameters(), "test");
+  return sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, dim), dim);
+}
+
+}  // namespace
+
+TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionFlatIsThePlane)
+{
+  for (int dim : {2, 3}) {
+    ParameterList plane, graph;
+    plane.set("Obstacle point", dim == 2 ? arr({0.0, 0.25}) : arr({0.0, 0.0, 0.25}));
+    plane.set("Obstacle normal", dim == 2 ? arr({0.0, 1.0}) : arr({0.0, 0.0, 1.0}));
+    graph.set("Obstacle", std::string("Height function"));
+    graph.set("Obstacle height", Teuchos::Array<std::string>(1, "0.25"));
+    graph.set("Obstacle normal", dim == 2 ? arr({0.0, 1.0}) : arr({0.0, 0.0, 1.0}));
+    const auto p = obstacleOf(plane, dim), g = obstacleOf(graph, dim);
+    const double points[4][3] = {{0.3, 0.7, 1.1}, {-2.0, 0.25, 0.4}, {1.5, 0.2, 0.249}, {0.1, 0.26, -0.3}};
+    const double rays[4][3] = {{0.0, -1.0, -1.0}, {0.6, -0.8, 0.0}, {0.48, 0.6, -0.64}, {0.0, 1.0, 0.0}};
+    for (const auto& x : points) {
+      TEST_FLOATING_EQUALITY(g->height(x) + 1.0, p->height(x) + 1.0, 1e-15);
+      const auto ng = g->contactNormal(x), np = p->contactNormal(x);
+      for (int i = 0; i < dim; ++i)
+        TEST_FLOATING_EQUALITY(ng[i] + 1.0, np[i] + 1.0, 1e-15);
+      for (const auto& n : rays) {
+        double u[3] = {n[0], n[1], n[2]}, len = 0.0;
+        for (int i = 0; i < dim; ++i) len += u[i] * u[i];
+        for (int i = 0; i < dim; ++i) u[i] /= std::sqrt(len);
+        TEST_FLOATING_EQUALITY(g->gap(x, u, 99.0) + 1.0, p->gap(x, u, 99.0) + 1.0, 1e-14);
+      }
+    }
+  }
+}
+
+TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionArcIsTheIndenter)
+{
+  // 2D: the circle of radius 1 around (0, 0.99) and its lower arc y = 0.99 − sqrt(1 − x²) (the
+  // body below it, normal {0, −1}), at points below the centre within |x| < 0.6, along the
+  // contact normal and along tilted rays; the same shifted by an obstacle displacement.
+  ParameterList circle, graph;
+  circle.set("Obstacle", std::string("Circle"));
+  circle.set("Obstacle center", arr({0.0, 0.99}));
+  circle.set("Obstacle normal", arr({0.0, -1.0}));
+  graph.set("Obstacle", std::string("Height function"));
+  graph.set("Obstacle height", Teuchos::Array<std::string>(1, "0.99 - sqrt(1 - x^2)"));
+  graph.set("Obstacle normal", arr({0.0, -1.0}));
+  for (auto* list : {&circle, &graph})
+    sc::core::validateParameters(*list, *sc::contact::ContactSettings::getValidParameters(), "test");
+  for (double shift : {0.0, 0.15}) {
+    auto cs = sc::contact::ContactSettings::fromParameters(circle, 2);
+    cs.obstacleCenter[0] += shift, cs.obstacleCenter[1] -= shift / 10;
+    auto gs = sc::contact::ContactSettings::fromParameters(graph, 2);
+    gs.obstacleOffset = {shift, -shift / 10};
+    gs.lengthScale = 4.0;
+    const auto c = sc::contact::createObstacle(cs, 2), g = sc::contact::createObstacle(gs, 2);
+    double worst = 0.0;
+    for (double x0 : {-0.5, -0.2, 0.0, 0.07, 0.3, 0.55})
+      for (double y0 : {-0.5, -0.05, -0.0123, 0.0, 0.004}) {
+        const double x[2] = {x0 + shift, y0};
+        worst = std::max(worst, std::abs(g->height(x) - c->height(x)));
+        const auto ng = g->contactNormal(x), nc = c->contactNormal(x);
+        worst = std::max({worst, std::abs(ng[0] - nc[0]), std::abs(ng[1] - nc[1])});
+        for (double angle : {0.0, 0.2, -0.35}) {
+          const double n[2] = {nc[0] * std::cos(angle) - nc[1] * std::sin(angle),
+                               nc[0] * std::sin(angle) + nc[1] * std::cos(angle)};
+          worst = std::max(worst, std::abs(g->gap(x, n, 99.0) - c->gap(x, n, 99.0)));
+        }
+        const double away[2] = {-nc[0], -nc[1]};
+        TEST_EQUALITY(g->gap(x, away, 99.0), 99.0);  // leaving the surface: a miss
+      }
+    out << "shift " << shift << ": largest difference from the circle " << worst << "\n";
+    TEST_COMPARE(worst, <, 1e-11);
+  }
+
+  // 3D: the sphere of radius 1 around (0.5, 0.5, 1.995) and its lower cap.
+  ParameterList sphere, cap;
+  sphere.set("Obstacle", std::string("Sphere"));
+  sphere.set("Obstacle center", arr({0.5, 0.5, 1.995}));
+  sphere.set("Obstacle normal", arr({0.0, 0.0, -1.0}));
+  cap.set("Obstacle", std::string("Height function"));
+  cap.set("Obstacle height", Teuchos::Array<std::string>(1, "1.995 - sqrt(1 - (x - 0.5)^2 - (y - 0.5)^2)"));
+  cap.set("Obstacle normal", arr({0.0, 0.0, -1.0}));
+  const auto s = obstacleOf(sphere, 3), g = obstacleOf(cap, 3);
+  double worst = 0.0;
+  for (double x0 : {0.0, 0.3, 0.5, 0.62})
+    for (double y0 : {0.1, 0.5, 0.77})
+      for (double z0 : {0.5, 0.99, 1.0}) {
+        const double x[3] = {x0, y0, z0};
+        worst = std::max(worst, std::abs(g->height(x) - s->height(x)));
+        const auto ng = g->contactNormal(x), ns = s->contactNormal(x);
+        for (int i = 0; i < 3; ++i)
+          worst = std::max(worst, std::abs(ng[i] - ns[i]));
+        const double tilted[3] = {0.3, -0.2, std::sqrt(1 - 0.13)};
+        worst = std::max({worst, std::abs(g->gap(x, ns.data(), 99.0) - s->gap(x, ns.data(), 99.0)),
+                          std::abs(g->gap(x, tilted, 99.0) - s->gap(x, tilted, 99.0))});
+      }
+  out << "3D: largest difference from the sphere " << worst << "\n";
+  TEST_COMPARE(worst, <, 1e-11);
+}
+
+TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionBadInput)
+{
+  auto error = [](ParameterList c, int dim) {
+    try {
+      sc::core::validateParameters(c, *sc::contact::ContactSettings::getValidParameters(), "test");
+      sc::contact::ContactSettings::fromParameters(c, dim);
+    } catch (const sc::core::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  ParameterList c;
+  c.set("Obstacle", std::string("Height function"));
+  c.set("Obstacle normal", arr({0.0, -1.0}));
+  std::string e = error(c, 2);
+  out << e << "\n";
+  TEST_ASSERT(e.find("needs 'Contact/Obstacle height'") != std::string::npos);
+  c.set("Obstacle height", Teuchos::Array<std::string>(1, "0.1*y"));
+  e = error(c, 2);
+  out << e << "\n";
+  TEST_ASSERT(e.find("'Contact/Obstacle height' = '0.1*y' uses y, the height's own coordinate") != std::string::npos);
+  c.set("Obstacle height", Teuchos::Array<std::string>(1, "0.1*x"));
+  c.set("Obstacle normal", arr({0.6, -0.8}));
+  e = error(c, 2);
+  out << e << "\n";
+  TEST_ASSERT(e.find("'Contact/Obstacle normal' must be {0, 1} or {0, -1}") != std::string::npos);
+  c.set("Obstacle", std::string("Plane"));
+  e = error(c, 2);
+  TEST_ASSERT(e.find("'Contact/Obstacle height' is given, but 'Contact/Obstacle' = 'Plane'") != std::string::npos);
+  c.set("Obstacle", std::string("Height function"));
+  c.set("Obstacle normal", arr({0.0, -1.0}));
+  c.set("Obstacle height", Teuchos::Array<std::string>(1, "0.1*x + (1"));
+  e = error(c, 2);
+  out << e << "\n";
+  TEST_ASSERT(e.find("Obstacle height' entry 1 = '0.1*x + (1' is not a valid formula: Missing parenthesis") != std::string::npos);
 }

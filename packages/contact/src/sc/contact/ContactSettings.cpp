@@ -4,6 +4,7 @@
 
 #include <sc/contact/ActiveSetSolver.hpp>
 #include <sc/core/Error.hpp>
+#include <sc/core/Expression.hpp>
 #include <sc/core/Parameters.hpp>
 
 namespace sc::contact {
@@ -13,16 +14,21 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
   using namespace sc::core;
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Contact"));
-    declareChoice(*pl, "Obstacle", "Plane", {"Plane", "Circle", "Sphere", "Cylinder"},
-                  "Shape of the rigid obstacle: a Plane (the foundation), or a rigid indenter: "
+    declareChoice(*pl, "Obstacle", "Plane", {"Plane", "Circle", "Sphere", "Cylinder", "Height function"},
+                  "Shape of the rigid obstacle: a Plane (the foundation), a rigid indenter: "
                   "Circle (2D: a cylinder in plane strain/stress), Sphere (3D) or Cylinder (3D, "
-                  "with Obstacle axis), given by Obstacle center and Obstacle radius; the body "
-                  "lies outside it (docs/contact.md 'Indenters').");
+                  "with Obstacle axis), given by Obstacle center and Obstacle radius, the body "
+                  "outside it (docs/contact.md 'Indenters'); or a Height function: the surface "
+                  "y = h(x) (2D) or z = h(x, y) (3D) of Obstacle height, the obstacle below it "
+                  "(Obstacle normal {0, 1} / {0, 0, 1}) or above it ({0, -1} / {0, 0, -1}) "
+                  "(docs/contact.md 'Height function').");
     declareRealArray(*pl, "Obstacle point", Teuchos::tuple<double>(0.0, 0.0),
                      "A point of the obstacle plane (d components).", {2, 3});
     declareRealArray(*pl, "Obstacle normal", Teuchos::tuple<double>(0.0, 1.0),
                      "Plane: its normal pointing towards the body (d components, normalised on "
-                     "input; a normal pointing away from the body is an error). Indenters: the "
+                     "input; a normal pointing away from the body is an error). Height function: "
+                     "{0, 1} / {0, 0, 1} for a body above the surface, {0, -1} / {0, 0, -1} for "
+                     "one below it. Indenters: the "
                      "direction in which the indenter presses into the body, the axis along "
                      "which the contact summary reports the load and across which it measures "
                      "the contact half-width.",
@@ -35,6 +41,13 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
     declareRealArray(*pl, "Obstacle axis", Teuchos::Array<double>(),
                      "Cylinder (3D): direction of its axis (3 components, normalised on input).",
                      {0, 3});
+    declareExpressionArray(*pl, "Obstacle height",
+                           "Height function: the formula h of its surface, y = h(x) in 2D or "
+                           "z = h(x, y) in 3D, e.g. {0.99 - sqrt(1 - x^2)}; it may use t (the "
+                           "load step's time) but not the height's own coordinate (y in 2D, z in "
+                           "3D), and must be finite, with its slope, over the body's span "
+                           "(docs/contact.md 'Height function').",
+                           {0, 1});
     declareChoice(*pl, "Frame", "Obstacle normal", {"Obstacle normal", "Body normal"},
                   "Contact frame of each contact point (docs/contact.md, 'Contact model'): "
                   "'Obstacle normal' measures the gap, the contact pressure and the slip along "
@@ -81,12 +94,39 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
   c.obstacleCenter = toVector(pl.get<Teuchos::Array<double>>("Obstacle center"));
   c.obstacleRadius = pl.get<double>("Obstacle radius");
   c.obstacleAxis = toVector(pl.get<Teuchos::Array<double>>("Obstacle axis"));
-  if (c.obstacle != "Plane") {
+  const auto& height = pl.get<Teuchos::Array<std::string>>("Obstacle height");
+  SC_THROW_IF(!height.empty() && c.obstacle != "Height function", core::InputError,
+              "'Contact/Obstacle height' is given, but 'Contact/Obstacle' = '"
+                  << c.obstacle << "'; the height is for 'Contact/Obstacle' = 'Height function'.");
+  if (c.obstacle == "Height function") {
+    const char* graph = dimension == 2 ? "y = h(x)" : "z = h(x, y)";
+    SC_THROW_IF(height.size() != 1, core::InputError,
+                "'Contact/Obstacle' = 'Height function' needs 'Contact/Obstacle height', the "
+                "formula h of the surface " << graph << " (e.g. {0.1*x^2}).");
+    c.obstacleHeight = height[0];
+    const core::Expression h(c.obstacleHeight, "'Contact/Obstacle height'");
+    const char* own = dimension == 2 ? "y" : "z";
+    SC_THROW_IF(h.uses(own), core::InputError,
+                "'Contact/Obstacle height' = '" << c.obstacleHeight << "' uses " << own
+                    << ", the height's own coordinate: the surface is " << graph
+                    << ", a formula of " << (dimension == 2 ? "x" : "x and y") << " (and t).");
+    bool alongAxis = true;
+    for (int i = 0; i + 1 < dimension; ++i)
+      alongAxis = alongAxis && std::abs(c.obstacleNormal[i]) <= 1e-12;
+    SC_THROW_IF(!alongAxis, core::InputError,
+                "'Contact/Obstacle normal' must be " << (dimension == 2 ? "{0, 1} or {0, -1}" : "{0, 0, 1} or {0, 0, -1}")
+                    << " for 'Contact/Obstacle' = 'Height function' (the body above or below the "
+                       "surface " << graph << "), but it is not along the "
+                    << own << " axis.");
+    const double side = c.obstacleNormal[dimension - 1] > 0.0 ? 1.0 : -1.0;
+    c.obstacleNormal.assign(dimension, 0.0);
+    c.obstacleNormal[dimension - 1] = side;
+  } else if (c.obstacle != "Plane") {
     const bool needs3D = c.obstacle != "Circle";
     SC_THROW_IF(needs3D != (dimension == 3), core::InputError,
                 "'Contact/Obstacle' = '" << c.obstacle << "' is a " << (needs3D ? "3D" : "2D")
                     << " indenter, but Problem/Dimension is " << dimension << "; valid: "
-                    << (dimension == 2 ? "'Plane', 'Circle'" : "'Plane', 'Sphere', 'Cylinder'") << ".");
+                    << (dimension == 2 ? "'Plane', 'Circle', 'Height function'" : "'Plane', 'Sphere', 'Cylinder', 'Height function'") << ".");
     SC_THROW_IF(static_cast<int>(c.obstacleCenter.size()) != dimension, core::InputError,
                 "'Contact/Obstacle' = '" << c.obstacle << "' needs 'Contact/Obstacle center' with "
                     << dimension << " components (got " << c.obstacleCenter.size() << ").");

@@ -38,7 +38,7 @@ struct NewtonSettings {
 
 /// "Contact": the rigid obstacle and the friction law (docs/theory.md §"Contact and friction").
 struct ContactSettings {
-  std::string obstacle;                ///< Plane, Circle (2D), Sphere (3D) or Cylinder (3D)
+  std::string obstacle;                ///< Plane, Circle (2D), Sphere (3D), Cylinder (3D), Height function
   std::vector<double> obstaclePoint;   ///< a point of the plane
   /// Plane: its unit normal, pointing into the body. Indenters: the unit direction in which the
   /// indenter presses into the body (the contact summary's load axis).
@@ -46,6 +46,16 @@ struct ContactSettings {
   std::vector<double> obstacleCenter;  ///< indenters: centre of the circle/sphere, a point of the axis
   double obstacleRadius{};             ///< indenters: radius
   std::vector<double> obstacleAxis;    ///< Cylinder: unit axis direction
+  /// Height function: the formula h of the surface x_d = h(x_1, ..., x_{d-1}) (y = h(x) in 2D,
+  /// z = h(x, y) in 3D; the key 'Contact/Obstacle height'); obstacleNormal is ±e_d.
+  std::string obstacleHeight;
+  /// Height function: the obstacle's displacement at the current load step (d components, or
+  /// empty: none); the surface is x_d = o_d + h(x' − o'). The other obstacles move their point or
+  /// centre instead.
+  std::vector<double> obstacleOffset;
+  /// The body's size (its bounding-box diagonal), set with the mesh: the height function's
+  /// finite-difference steps are fractions of it.
+  double lengthScale = 1.0;
   ContactFrame frame{};
   FrictionLaw frictionLaw{};
   double frictionCoefficient{};

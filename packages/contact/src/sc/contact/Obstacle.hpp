@@ -8,9 +8,11 @@
 // cap (never ∞, since c·G is formed), so such points stay free.
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <sc/contact/ContactSettings.hpp>
+#include <sc/core/Expression.hpp>
 
 namespace sc::mesh {
 class SimplexMesh;
@@ -65,6 +67,44 @@ private:
   double radius_;
   bool cylinder_;
   std::array<double, 3> across(const double* v) const;  ///< v without its component along the axis
+};
+
+/// A rigid obstacle bounded by the graph of a height function (docs/contact.md "Height
+/// function"): the surface x_d = H(x') = o_d + h(x' − o'), x' = (x_1, ..., x_{d−1}) (y = h(x) in
+/// 2D, z = h(x, y) in 3D), h the deck's formula and o the obstacle's displacement at the load
+/// step; the body lies on the side `side` e_d of it (side = ±1, the Obstacle normal). At a point x:
+/// the closest point P = (ξ, H(ξ)) of the graph (Newton on the stationarity of ½|ξ − x'|² +
+/// ½(H(ξ) − x_d)², backtracking, started from the vertical projection ξ = x'), the body-side
+/// normal ν = side (−∇H, 1)/√(1 + |∇H|²) at P, height (x − P)·ν (the signed distance), contact
+/// normal −ν (into the obstacle), and the gap along n the root of side (x_d + s n_d − H(x' + s n'))
+/// nearest to s = 0 on the side the ray meets the surface (Newton with bracketing). ∇H and the
+/// Hessian are central finite differences (4th and 2nd order) with steps that are fixed
+/// fractions of the body's size: exact for an affine h, within ~1e-12 of the slope otherwise.
+/// A flat h reproduces the Plane's numbers (the same formulas to rounding).
+class HeightFunctionObstacle : public Obstacle {
+public:
+  HeightFunctionObstacle(int dim, const std::string& formula, double side,
+                         const std::vector<double>& offset, double lengthScale);
+  double gap(const double* x, const double* n, double cap) const override;
+  std::array<double, 3> contactNormal(const double* x) const override;
+  double height(const double* x) const override;
+
+  /// H at the surface point ξ (d − 1 coordinates), NaN or ±inf where the formula is not finite.
+  double surface(const double* xi) const;
+  /// ∇H at ξ by 4th-order central differences; false if a stencil value is not finite.
+  bool slope(const double* xi, double* gradient) const;
+  /// The closest point's ξ of the graph to x (see the class comment).
+  std::array<double, 2> closestPoint(const double* x) const;
+
+private:
+  int dim_;
+  core::Expression h_;
+  double side_;
+  std::array<double, 3> offset_{};
+  double length_;                  ///< the body's size: the searches' tolerances are 1e-13 of it
+  double firstStep_, secondStep_;  ///< finite-difference steps of ∇H and of the Hessian
+  bool hessian(const double* xi, double* H) const;
+  std::array<double, 3> bodyNormal(const double* xi) const;  ///< ν at the surface point over ξ
 };
 
 std::unique_ptr<Obstacle> createObstacle(const ContactSettings& settings, int dim);

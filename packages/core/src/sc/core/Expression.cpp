@@ -112,6 +112,29 @@ double Expression::operator()(const double* x, int dim) const
   return v;
 }
 
+double Expression::unchecked(const double* x, int dim) const
+{
+  Impl& I = *impl_;
+  I.x = dim > 0 ? x[0] : 0.0;
+  I.y = dim > 1 ? x[1] : 0.0;
+  I.z = dim > 2 ? x[2] : 0.0;
+  I.t = g_loadTime;
+  try {
+    FloatingPointTrapsSuspended userFormula;
+    return I.parser.Eval();
+  } catch (const mu::Parser::exception_type&) {
+    return std::nan("");
+  }
+}
+
+bool Expression::uses(const std::string& name) const
+{
+  // GetUsedVar parses the formula again in a mode that only collects names: the formula was
+  // compiled by the constructor, so it cannot fail here.
+  const auto used = impl_->parser.GetUsedVar();
+  return used.find(name) != used.end();
+}
+
 const std::string& Expression::formula() const { return impl_->formula; }
 const std::string& Expression::key() const { return impl_->key; }
 

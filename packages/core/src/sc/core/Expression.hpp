@@ -34,6 +34,14 @@ public:
   /// the formula and the point: the deck's data must be defined wherever the body is.
   double operator()(const double* x, int dim) const;
 
+  /// The value at x without the finiteness check: NaN where muparser cannot evaluate the
+  /// formula, and ±inf or NaN as the formula gives them. For callers that probe points near the
+  /// body (a search that backs off where the formula is not finite) and report themselves.
+  double unchecked(const double* x, int dim) const;
+
+  /// Whether the formula uses the variable `name` (x, y, z or t), as muparser reports it.
+  bool uses(const std::string& name) const;
+
   const std::string& formula() const;
   const std::string& key() const;
 

@@ -27,7 +27,8 @@ Teuchos::RCP<const Teuchos::ParameterList> LoadSteps::getValidParameters()
     declareRealArray(*pl, "Obstacle displacement", Teuchos::Array<double>(),
                      "The rigid obstacle's displacement at each step, row after row (one value "
                      "per dimension per step), added to 'Contact/Obstacle point' (a plane) or "
-                     "'Contact/Obstacle center' (an indenter). Empty: the obstacle stays.",
+                     "'Contact/Obstacle center' (an indenter), or moving the surface of a height "
+                     "function as a whole. Empty: the obstacle stays.",
                      {});
     return pl;
   }();
