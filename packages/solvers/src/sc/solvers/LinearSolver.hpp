@@ -44,6 +44,16 @@ struct MultigridLevel {
   Teuchos::RCP<const CrsMatrix> prolongation;
   /// σ DOF ids of the smoother patches (vertex stars in 2D, edge stars in 3D) this rank smooths on this level (unused on the coarsest).
   std::vector<std::vector<long long>> patches;
+  /// For each element E of the next coarser level that this rank handles (the owner of its
+  /// lowest-numbered fine element): the σ DOF ids of the fine elements inside E, split into
+  /// those on fine faces that lie on E's boundary (`boundary`) and the rest (`interior`: element
+  /// interiors and faces between two fine elements of E). The multigrid extends coarse
+  /// functions cut by contact constraints into E's interior (StressMultigrid.cpp); empty on the
+  /// coarsest level.
+  struct CoarseElement {
+    std::vector<long long> interior, boundary;
+  };
+  std::vector<CoarseElement> coarseElements;
 };
 
 /// The 3×3 field layout of the mixed system (docs/theory.md §"Mixed formulation"): monolithic

@@ -36,6 +36,52 @@ int elementOwner(const disc::MixedElasticitySpace& s, int e)
 {
   return s.dofOwner(s.elementDofs(e)[s.displacementOffset(0)]);
 }
+// The σ DOFs of the fine elements inside each coarse element this rank handles (the owner of
+// its lowest-numbered fine element), split at the coarse element's boundary: a fine face lies on
+// it when it is on the domain boundary or its other element has another parent
+// (MultigridLevel::coarseElements).
+std::vector<MultigridLevel::CoarseElement> coarseElementDofs(const disc::MixedElasticitySpace& fine,
+                                                             const std::vector<int>& parent,
+                                                             int coarseElements)
+{
+  const auto& m = fine.mesh();
+  const int d = fine.dim(), nRT = fine.stressBasisSize(), ne = m.numElements();
+  std::vector<int> first(coarseElements, -1);
+  for (int e = 0; e < ne; ++e)
+    if (first[parent[e]] < 0)
+      first[parent[e]] = e;
+  std::vector<int> slot(coarseElements, -1);
+  std::vector<MultigridLevel::CoarseElement> out;
+  for (int c = 0; c < coarseElements; ++c)
+    if (first[c] >= 0 && elementOwner(fine, first[c]) == fine.rank()) {
+      slot[c] = static_cast<int>(out.size());
+      out.emplace_back();
+    }
+  std::vector<char> onBoundary(nRT);
+  for (int e = 0; e < ne; ++e) {
+    const int s = slot[parent[e]];
+    if (s < 0)
+      continue;
+    std::fill(onBoundary.begin(), onBoundary.end(), 0);
+    for (int lf = 0; lf <= d; ++lf) {
+      const auto fe = m.faceElements(m.elementFaces(e)[lf]);
+      const int other = fe[0] == e ? fe[1] : fe[0];
+      if (other < 0 || parent[other] != parent[e])
+        for (int a : fine.stressFaceLocalDofs(lf))
+          onBoundary[a] = 1;
+    }
+    const long long* ed = fine.elementDofs(e);
+    for (int i = 0; i < d; ++i)
+      for (int a = 0; a < nRT; ++a)
+        (onBoundary[a] ? out[s].boundary : out[s].interior).push_back(ed[fine.stressOffset(i) + a]);
+  }
+  for (auto& c : out)
+    for (auto* v : {&c.interior, &c.boundary}) {
+      std::sort(v->begin(), v->end());
+      v->erase(std::unique(v->begin(), v->end()), v->end());
+    }
+  return out;
+}
 }  // namespace
 
 Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coarse,
@@ -241,6 +287,8 @@ std::vector<MultigridLevel> StressHierarchy::levels(
           p = parents_[j][p];
       out[l].prolongation = stressProlongation(*previous, *space, parent, comm_);
       out[l].patches = stressPatches(*space);
+      out[l].coarseElements =
+          coarseElementDofs(*space, parent, previous->mesh().numElements());
     }
     previous = space;
   }

@@ -2,8 +2,12 @@
 
 #include <sc/solvers/StressMultigrid.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
+#include <unordered_map>
 
+#include <Teuchos_LAPACK.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
@@ -40,6 +44,7 @@ public:
   };
   std::vector<Level> levels;  // coarsest first
   Teuchos::RCP<DirectSolver> coarse;
+  int extendedFunctions = 0;  // coarse functions extended into their element (all levels)
   int degree = 2;       // Chebyshev degree (smoother applications before and after)
   double ratio = 10.0;  // λ_max / λ_min of the smoothed interval
 
@@ -120,6 +125,350 @@ double largestEigenvalue(const PatchSmoother& B, const CrsMatrix& A, int iterati
   return lambda;
 }
 
+// The coarse space of one level under the fine level's constraints (docs/solvers.md "Contact
+// with the stress multigrid"). Fine rows: `masked` (no coarse correction: data, eliminated or
+// constraint rows), `contact` (contact coordinates, or coarse functions made of them). Coarse
+// functions (columns of P0) are
+//   - dropped (zero column) when they touch a masked row that is not a contact row (traction
+//     data: cutting those made P rank-deficient on locally refined hierarchies), or when they
+//     touch masked contact rows but no open one;
+//   - otherwise kept with their masked part cut off;
+//   - a kept function that lost a significant part (≥ 5% of its largest coefficient) on the
+//     boundary of a coarse element E is extended into E: the fine interior DOFs of E are set to
+//     minimise A's energy with the function's values on E's boundary fixed (a local solve with
+//     A's block on E's interior). The cut alone leaves the lost flux as a divergence layer one
+//     fine element thick along the cut, whose energy grows like H/h (coarse over fine mesh size
+//     near the contact zone's ends, which adaptive cycles refine); the extension spreads it over
+//     E.
+// Coarse rows are contact rows when their function touches one.
+struct ConstrainedProlongation {
+  Teuchos::RCP<CrsMatrix> P;
+  std::vector<char> coarseContact;  // per local row of P's domain map
+  int extended = 0;                 // functions extended (global)
+};
+
+ConstrainedProlongation constrainProlongation(
+    const CrsMatrix& A, const CrsMatrix& P0, const std::vector<char>& masked,
+    const std::vector<char>& contact,
+    const std::vector<MultigridLevel::CoarseElement>& coarseElements)
+{
+  const auto& rowMap = P0.getRowMap();
+  const auto& colMap = P0.getColMap();
+  const auto& domainMap = P0.getDomainMap();
+  const LO nRows = static_cast<LO>(P0.getNodeNumRows());
+  // a coefficient counts when it is above 1e-8 of its row's largest (curved boundaries leave
+  // round-off-sized traces of interior functions on boundary faces)
+  auto rowThreshold = [](const typename CrsMatrix::values_host_view_type& v) {
+    double m = 0.0;
+    for (size_t k = 0; k < v.extent(0); ++k)
+      m = std::max(m, std::abs(v(k)));
+    return 1e-8 * m;
+  };
+  // flags per coarse column: 0 a masked non-contact row, 1 a masked contact row, 2 an open
+  // contact row, 3 any contact row
+  Tpetra::MultiVector<> flagged(colMap, 4, true);
+  {
+    auto f0 = flagged.getDataNonConst(0), f1 = flagged.getDataNonConst(1),
+         f2 = flagged.getDataNonConst(2), f3 = flagged.getDataNonConst(3);
+    for (LO i = 0; i < nRows; ++i) {
+      if (!masked[i] && !contact[i])
+        continue;
+      typename CrsMatrix::local_inds_host_view_type inds;
+      typename CrsMatrix::values_host_view_type v;
+      P0.getLocalRowView(i, inds, v);
+      const double tiny = rowThreshold(v);
+      for (size_t k = 0; k < inds.extent(0); ++k) {
+        if (v(k) == 0.0)
+          continue;
+        if (masked[i] && !contact[i])
+          f0[inds(k)] = 1.0;
+        if (std::abs(v(k)) > tiny && contact[i]) {
+          (masked[i] ? f1 : f2)[inds(k)] = 1.0;
+          f3[inds(k)] = 1.0;
+        }
+      }
+    }
+  }
+  Tpetra::MultiVector<> coarseFlags(domainMap, 4, true);
+  const Tpetra::Export<> toDomain(colMap, domainMap);
+  coarseFlags.doExport(flagged, toDomain, Tpetra::ADD);
+  // largest coefficient of each coarse function, and on open rows: a function that keeps less
+  // than 1e-3 of it is dropped (cut functions so small made Galerkin patches indefinite)
+  Tpetra::MultiVector<> largest(colMap, 2, true), coarseLargest(domainMap, 2, true);
+  {
+    auto all = largest.getDataNonConst(0), open = largest.getDataNonConst(1);
+    for (LO i = 0; i < nRows; ++i) {
+      typename CrsMatrix::local_inds_host_view_type inds;
+      typename CrsMatrix::values_host_view_type v;
+      P0.getLocalRowView(i, inds, v);
+      for (size_t k = 0; k < inds.extent(0); ++k) {
+        all[inds(k)] = std::max(all[inds(k)], std::abs(v(k)));
+        if (!masked[i])
+          open[inds(k)] = std::max(open[inds(k)], std::abs(v(k)));
+      }
+    }
+  }
+  coarseLargest.doExport(largest, toDomain, Tpetra::ABSMAX);
+  Vector keep(domainMap, false);
+  ConstrainedProlongation out;
+  std::vector<GO> cutMine;
+  {
+    const auto c0 = coarseFlags.getData(0), c1 = coarseFlags.getData(1),
+               c2 = coarseFlags.getData(2), c3 = coarseFlags.getData(3);
+    const auto lAll = coarseLargest.getData(0), lOpen = coarseLargest.getData(1);
+    auto kv = keep.getDataNonConst(0);
+    out.coarseContact.assign(kv.size(), 0);
+    for (LO j = 0; j < static_cast<LO>(kv.size()); ++j) {
+      kv[j] = c0[j] == 0.0 && (c1[j] == 0.0 || c2[j] != 0.0) && lOpen[j] >= 1e-3 * lAll[j] ? 1.0 : 0.0;
+      out.coarseContact[j] = c3[j] != 0.0;
+      if (kv[j] != 0.0 && c1[j] != 0.0)
+        cutMine.push_back(domainMap->getGlobalElement(j));
+    }
+  }
+  Vector keepCols(colMap, false);
+  keepCols.doImport(keep, Tpetra::Import<>(domainMap, colMap), Tpetra::INSERT);
+  const auto kc = keepCols.getData(0);
+  // The rows of P: kept columns on open rows; masked rows empty.
+  std::vector<std::vector<GO>> cols(nRows);
+  std::vector<std::vector<double>> vals(nRows);
+  auto addRow = [&](LO target, LO source, double factor) {
+    typename CrsMatrix::local_inds_host_view_type inds;
+    typename CrsMatrix::values_host_view_type v;
+    P0.getLocalRowView(source, inds, v);
+    for (size_t k = 0; k < inds.extent(0); ++k)
+      if (v(k) != 0.0 && kc[inds(k)] != 0.0) {
+        const GO g = colMap->getGlobalElement(inds(k));
+        auto at = std::find(cols[target].begin(), cols[target].end(), g);
+        if (at == cols[target].end()) {
+          cols[target].push_back(g);
+          vals[target].push_back(factor * v(k));
+        } else {
+          vals[target][at - cols[target].begin()] += factor * v(k);
+        }
+      }
+  };
+  for (LO i = 0; i < nRows; ++i)
+    if (!masked[i])
+      addRow(i, i, 1.0);
+  auto build = [&](std::vector<std::vector<GO>>& cs, std::vector<std::vector<double>>& vs) {
+    std::vector<size_t> counts(nRows);
+    for (LO i = 0; i < nRows; ++i)
+      counts[i] = cs[i].size();
+    auto M = Teuchos::rcp(new CrsMatrix(rowMap, Teuchos::ArrayView<const size_t>(counts)));
+    for (LO i = 0; i < nRows; ++i)
+      if (!cs[i].empty())
+        M->insertGlobalValues(rowMap->getGlobalElement(i), Teuchos::ArrayView<const GO>(cs[i]),
+                              Teuchos::ArrayView<const double>(vs[i]));
+    M->fillComplete(domainMap, P0.getRangeMap());
+    return M;
+  };
+  auto P = build(cols, vals);
+
+  // Extension of the cut functions into their coarse elements.
+  const auto& comm = *rowMap->getComm();
+  std::vector<double> mineAsDouble(cutMine.begin(), cutMine.end());
+  const auto cutAll = sc::core::gatherAllConcatenated(comm, mineAsDouble);
+  if (cutAll.empty()) {
+    out.P = P;
+    return out;
+  }
+  // overlap maps: the boundary and interior DOFs of this rank's coarse elements
+  auto unionMap = [&](bool interior) {
+    std::vector<GO> ids;
+    for (const auto& c : coarseElements) {
+      const auto& v = interior ? c.interior : c.boundary;
+      ids.insert(ids.end(), v.begin(), v.end());
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    const auto inv = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+    return Teuchos::rcp(new Map(inv, Teuchos::ArrayView<const GO>(ids), 0, rowMap->getComm()));
+  };
+  const auto boundaryMap = unionMap(false), interiorMap = unionMap(true);
+  const Tpetra::Import<> toBoundary(rowMap, boundaryMap), toInterior(rowMap, interiorMap);
+  const Tpetra::Export<> fromInterior(interiorMap, rowMap);
+  CrsMatrix Aov(interiorMap, 0);
+  Aov.doImport(A, Tpetra::Import<>(A.getRowMap(), interiorMap), Tpetra::INSERT);
+  Aov.fillComplete(A.getDomainMap(), A.getRangeMap());
+  Vector maskedRows(rowMap, true), maskedBoundary(boundaryMap, false);
+  {
+    auto mv = maskedRows.getDataNonConst(0);
+    for (LO i = 0; i < nRows; ++i)
+      mv[i] = masked[i] ? 1.0 : 0.0;
+  }
+  maskedBoundary.doImport(maskedRows, toBoundary, Tpetra::INSERT);
+  const auto mb = maskedBoundary.getData(0);
+  std::vector<std::vector<GO>> cCols(nRows);
+  std::vector<std::vector<double>> cVals(nRows);
+  Teuchos::LAPACK<int, double> lapack;
+  const int chunk = 32;
+  std::vector<GO> droppedGids;
+  for (std::size_t begin = 0; begin < cutAll.size(); begin += chunk) {
+    const int nc = static_cast<int>(std::min<std::size_t>(chunk, cutAll.size() - begin));
+    std::unordered_map<GO, int> column;
+    for (int k = 0; k < nc; ++k)
+      column[static_cast<GO>(cutAll[begin + k])] = k;
+    // Xu: the uncut functions, X: the cut ones (rows of P0 and P), R = A X
+    MultiVector Xu(rowMap, nc, true), X(rowMap, nc, true);
+    for (int which = 0; which < 2; ++which) {
+      const CrsMatrix& M = which == 0 ? P0 : *P;
+      MultiVector& Y = which == 0 ? Xu : X;
+      for (LO i = 0; i < nRows; ++i) {
+        typename CrsMatrix::local_inds_host_view_type inds;
+        typename CrsMatrix::values_host_view_type v;
+        M.getLocalRowView(i, inds, v);
+        for (size_t k = 0; k < inds.extent(0); ++k) {
+          const auto at = column.find(M.getColMap()->getGlobalElement(inds(k)));
+          if (at != column.end())
+            Y.replaceLocalValue(i, at->second, v(k));
+        }
+      }
+    }
+    Teuchos::Array<double> largest(nc);
+    Xu.normInf(largest());
+    MultiVector R(A.getRangeMap(), nc, false);
+    A.apply(X, R);
+    MultiVector XuB(boundaryMap, nc, false), XB(boundaryMap, nc, false),
+        Rov(interiorMap, nc, false), Cov(interiorMap, nc, true);
+    XuB.doImport(Xu, toBoundary, Tpetra::INSERT);
+    XB.doImport(X, toBoundary, Tpetra::INSERT);
+    std::vector<int> dependent(nc, 0);
+    Rov.doImport(R, toInterior, Tpetra::INSERT);
+    const auto& ovCols = *Aov.getColMap();
+    std::vector<int> position(ovCols.getNodeNumElements(), -1);
+    std::vector<double> dense, rhs;
+    std::vector<int> pivots;
+    std::vector<Teuchos::ArrayRCP<const double>> xbs(nc), cbs(nc);
+    for (int k = 0; k < nc; ++k) {
+      xbs[k] = XuB.getData(k);
+      cbs[k] = XB.getData(k);
+    }
+    for (const auto& c : coarseElements) {
+      // the functions that lost a significant part on E's boundary
+      std::vector<int> home;
+      for (int k = 0; k < nc; ++k) {
+        const auto& xb = xbs[k];
+        bool lost = false;
+        for (GO g : c.boundary) {
+          const LO b = boundaryMap->getLocalElement(g);
+          lost = lost || (mb[b] != 0.0 && std::abs(xb[b]) >= 0.05 * largest[k]);
+        }
+        if (lost)
+          home.push_back(k);
+      }
+      const int m = static_cast<int>(c.interior.size());
+      if (home.empty() || m == 0)
+        continue;
+      {
+        // The extension depends only on the values on E's boundary: a function whose boundary
+        // values are a combination of the others' (two functions of a coarse face that keep the
+        // same few open points) would duplicate them; it is dropped (Gram–Schmidt).
+        const int nb = static_cast<int>(c.boundary.size());
+        std::vector<std::vector<double>> basis;
+        std::vector<int> independent;
+        for (int k : home) {
+          std::vector<double> t(nb);
+          double norm0 = 0.0;
+          for (int b = 0; b < nb; ++b) {
+            t[b] = cbs[k][boundaryMap->getLocalElement(c.boundary[b])];
+            norm0 += t[b] * t[b];
+          }
+          for (const auto& q : basis) {
+            double dot = 0.0;
+            for (int b = 0; b < nb; ++b)
+              dot += q[b] * t[b];
+            for (int b = 0; b < nb; ++b)
+              t[b] -= dot * q[b];
+          }
+          double norm = 0.0;
+          for (double x : t)
+            norm += x * x;
+          if (!(norm > 1e-12 * norm0)) {
+            dependent[k] = 1;
+            continue;
+          }
+          for (double& x : t)
+            x /= std::sqrt(norm);
+          basis.push_back(std::move(t));
+          independent.push_back(k);
+        }
+        home = independent;
+        if (home.empty())
+          continue;
+      }
+      for (int a = 0; a < m; ++a) {
+        const LO col = ovCols.getLocalElement(c.interior[a]);
+        if (col != Teuchos::OrdinalTraits<LO>::invalid())
+          position[col] = a;
+      }
+      dense.assign(static_cast<std::size_t>(m) * m, 0.0);
+      for (int a = 0; a < m; ++a) {
+        typename CrsMatrix::local_inds_host_view_type inds;
+        typename CrsMatrix::values_host_view_type v;
+        Aov.getLocalRowView(interiorMap->getLocalElement(c.interior[a]), inds, v);
+        for (size_t k = 0; k < inds.extent(0); ++k)
+          if (position[inds(k)] >= 0)
+            dense[static_cast<std::size_t>(position[inds(k)]) * m + a] = v(k);  // column-major
+      }
+      for (int a = 0; a < m; ++a) {
+        const LO col = ovCols.getLocalElement(c.interior[a]);
+        if (col != Teuchos::OrdinalTraits<LO>::invalid())
+          position[col] = -1;
+      }
+      const int nh = static_cast<int>(home.size());
+      rhs.assign(static_cast<std::size_t>(m) * nh, 0.0);
+      for (int h = 0; h < nh; ++h) {
+        const auto rv = Rov.getData(home[h]);
+        for (int a = 0; a < m; ++a)
+          rhs[static_cast<std::size_t>(h) * m + a] = -rv[interiorMap->getLocalElement(c.interior[a])];
+      }
+      pivots.resize(m);
+      int info = 0;
+      lapack.GETRF(m, m, dense.data(), m, pivots.data(), &info);
+      SC_THROW_IF(info != 0, sc::core::ConvergenceError,
+                  "stress multigrid: the interior block of a coarse element is singular "
+                  "(LAPACK getrf info " << info << ")");
+      lapack.GETRS('N', m, nh, dense.data(), m, pivots.data(), rhs.data(), m, &info);
+      for (int h = 0; h < nh; ++h) {
+        auto cv = Cov.getDataNonConst(home[h]);
+        for (int a = 0; a < m; ++a)
+          cv[interiorMap->getLocalElement(c.interior[a])] += rhs[static_cast<std::size_t>(h) * m + a];
+      }
+      out.extended += nh;
+    }
+    std::vector<int> anyDependent(nc, 0);
+    core::sumOverRanks(comm, nc, dependent.data(), anyDependent.data());
+    for (int k = 0; k < nc; ++k)
+      if (anyDependent[k])
+        droppedGids.push_back(static_cast<GO>(cutAll[begin + k]));
+    MultiVector C(rowMap, nc, true);
+    C.doExport(Cov, fromInterior, Tpetra::ADD);
+    for (int k = 0; k < nc; ++k) {
+      const auto cv = C.getData(k);
+      for (LO i = 0; i < nRows; ++i)
+        if (cv[i] != 0.0) {
+          cCols[i].push_back(static_cast<GO>(cutAll[begin + k]));
+          cVals[i].push_back(cv[i]);
+        }
+    }
+  }
+  out.extended = core::sumOverRanks(comm, out.extended);
+  auto correction = build(cCols, cVals);
+  out.P = Tpetra::MatrixMatrix::add(1.0, false, *P, 1.0, false, *correction, domainMap,
+                                    P0.getRangeMap());
+  if (!droppedGids.empty()) {
+    Vector keepAfter(domainMap, false);
+    keepAfter.putScalar(1.0);
+    for (GO g : droppedGids) {
+      const LO j = domainMap->getLocalElement(g);
+      if (j != Teuchos::OrdinalTraits<LO>::invalid())
+        keepAfter.replaceLocalValue(j, 0.0);
+    }
+    out.P->rightScale(keepAfter);
+  }
+  return out;
+}
+
 }  // namespace
 
 Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
@@ -140,6 +489,7 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
   mg->ratio = options.smootherRatio;
   mg->levels.resize(L);
   mg->levels[L - 1].A = S;
+  std::vector<char> contact;  // per row of the level being coarsened: a contact coordinate's
   for (int l = L - 1; l >= 1; --l) {
     SC_THROW_IF(levels[l].prolongation.is_null(), sc::core::InternalError,
                 "stress multigrid: level " << l << " has no prolongation");
@@ -151,15 +501,14 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
       P = TP;
     }
     const auto& A = *mg->levels[l].A;
+    // Rows with only a diagonal (fixed by traction data on the finest level; decoupled rows of
+    // a coarser one) and, on the finest level, the constraint rows take no coarse correction.
+    std::vector<char> masked(P->getNodeNumRows(), 0);
     {
-      // Rows with only a diagonal (fixed by traction data on the finest level; decoupled rows of
-      // a coarser one, below) take no coarse correction.
-      Vector mask(P->getRangeMap());
-      auto mv = mask.getDataNonConst(0);
       const auto& rows = *A.getRowMap();
       const auto& cols = *A.getColMap();
-      for (LO i = 0; i < static_cast<LO>(mv.size()); ++i) {
-        const GO g = P->getRangeMap()->getGlobalElement(i);
+      for (LO i = 0; i < static_cast<LO>(masked.size()); ++i) {
+        const GO g = P->getRowMap()->getGlobalElement(i);
         typename CrsMatrix::local_inds_host_view_type inds;
         typename CrsMatrix::values_host_view_type v;
         A.getLocalRowView(rows.getLocalElement(g), inds, v);
@@ -167,62 +516,28 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
         for (size_t k = 0; k < inds.extent(0) && !offDiagonal; ++k)
           offDiagonal = v(k) != 0.0 && cols.getGlobalElement(inds(k)) != g;
         const bool constraint = l == L - 1 && constraintRows[rows.getLocalElement(g)];
-        mv[i] = offDiagonal && !constraint ? 1.0 : 0.0;
+        masked[i] = offDiagonal && !constraint ? 0 : 1;
       }
-      // The coarse basis functions with a normal trace on those rows' faces (traction DOFs of
-      // the coarse level) violate the fine constraint: drop them from the coarse space (zero
-      // columns; their coarse rows get a unit diagonal below). Keeping them with their
-      // constrained part cut off made P rank-deficient on locally refined hierarchies (a patch
-      // of a Galerkin operator not positive definite).
-      // Contact coordinates (rows of stressBasis other than the identity) are cut off instead:
-      // their coarse functions keep the rest of their image. Dropping them left the coarse
-      // space without normal traction anywhere near the contact zone (the load path of the
-      // contact force), and MINRES took 200-360 iterations on Hertz 2D instead of ~50.
-      std::vector<char> cutOnly(mv.size(), 0);
-      if (l == L - 1 && !stressBasis.is_null()) {
+    }
+    if (l == L - 1) {
+      // Contact coordinates: rows of stressBasis other than the identity.
+      contact.assign(masked.size(), 0);
+      if (!stressBasis.is_null()) {
         const auto& bRows = *stressBasis->getRowMap();
         const auto& bCols = *stressBasis->getColMap();
-        for (LO i = 0; i < static_cast<LO>(mv.size()); ++i) {
-          const GO g = P->getRangeMap()->getGlobalElement(i);
+        for (LO i = 0; i < static_cast<LO>(masked.size()); ++i) {
+          const GO g = P->getRowMap()->getGlobalElement(i);
           typename CrsMatrix::local_inds_host_view_type inds;
           typename CrsMatrix::values_host_view_type v;
           stressBasis->getLocalRowView(bRows.getLocalElement(g), inds, v);
-          cutOnly[i] = !(inds.extent(0) == 1 && bCols.getGlobalElement(inds(0)) == g && v(0) == 1.0);
+          contact[i] = !(inds.extent(0) == 1 && bCols.getGlobalElement(inds(0)) == g && v(0) == 1.0);
         }
       }
-      // flags per coarse column: 0 touches a masked row that is not a contact coordinate,
-      // 1 a masked contact coordinate, 2 an open (unmasked) contact coordinate
-      Tpetra::MultiVector<> flagged(P->getColMap(), 3, true);
-      {
-        auto f0 = flagged.getDataNonConst(0), f1 = flagged.getDataNonConst(1),
-             f2 = flagged.getDataNonConst(2);
-        for (LO i = 0; i < static_cast<LO>(mv.size()); ++i) {
-          if (mv[i] != 0.0 && !cutOnly[i])
-            continue;
-          auto& f = !cutOnly[i] ? f0 : mv[i] == 0.0 ? f1 : f2;
-          typename CrsMatrix::local_inds_host_view_type inds;
-          typename CrsMatrix::values_host_view_type v;
-          P->getLocalRowView(i, inds, v);
-          for (size_t k = 0; k < inds.extent(0); ++k)
-            if (v(k) != 0.0)
-              f[inds(k)] = 1.0;
-        }
-      }
-      Tpetra::MultiVector<> coarseFlags(P->getDomainMap(), 3, true);
-      coarseFlags.doExport(flagged, Tpetra::Export<>(P->getColMap(), P->getDomainMap()),
-                           Tpetra::ADD);
-      Vector coarseFlag(P->getDomainMap(), false);
-      {
-        const auto c0 = coarseFlags.getData(0), c1 = coarseFlags.getData(1),
-                   c2 = coarseFlags.getData(2);
-        auto cv = coarseFlag.getDataNonConst(0);
-        // kept: no masked data row, and where a contact coordinate is masked, some open one
-        for (LO j = 0; j < static_cast<LO>(cv.size()); ++j)
-          cv[j] = c0[j] == 0.0 && (c1[j] == 0.0 || c2[j] != 0.0) ? 1.0 : 0.0;
-      }
-      P->leftScale(mask);
-      P->rightScale(coarseFlag);
     }
+    auto cp = constrainProlongation(A, *P, masked, contact, levels[l].coarseElements);
+    P = cp.P;
+    contact = std::move(cp.coarseContact);
+    mg->extendedFunctions += cp.extended;
     auto AP = Teuchos::rcp(new CrsMatrix(A.getRowMap(), 0));
     Tpetra::MatrixMatrix::Multiply(A, false, *P, false, *AP);
     auto Ac = Teuchos::rcp(new CrsMatrix(P->getDomainMap(), 0));
