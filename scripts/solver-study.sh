@@ -5,6 +5,9 @@
 #                                        # exact S_σ, Iterative with multigrid; 1, 2 and 4 ranks
 #   scripts/solver-study.sh large        # 3D at 2·10⁶ DOFs: multigrid at 1, 2, 4 ranks, and MUMPS
 #                                        # under a memory limit (SC_STUDY_MEMORY_GB, default 22)
+#   scripts/solver-study.sh contact      # Hertz 2D adaptive (14 cycles), Stress block = Multigrid:
+#                                        # Krylov iterations per Newton step and cycle, frictionless
+#                                        # and Coulomb, ν = 0.28 and 0.4999 (1 rank)
 # Output: the benchmark lines (one per size and solver) with `uptime` before and after each run.
 # SC_BUILD_DIR as in common.sh; SC_STUDY_MAX_2D / SC_STUDY_MAX_3D bound the sizes of "cost".
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -35,5 +38,26 @@ case "$what" in
       ( ulimit -v $(( kb / n )); run sc_mpiexec -n $n "$B" --dim=3 --solvers=Iterative --stress-block=Multigrid --min-dofs=1000000 --max-dofs=2500000 )
     done
     ( ulimit -v $kb; run sc_mpiexec -n 1 "$B" --dim=3 --solvers=MUMPS --min-dofs=1000000 --max-dofs=2500000 ) ;;
-  *) echo "solver-study: unknown study '$what' (iterations, cost, large)" >&2; exit 1 ;;
+  contact)
+    app="$SC_BUILD_DIR/apps/stresscontact/stresscontact"
+    out=$(mktemp -d)
+    for law in None Coulomb; do
+      for nu in 0.28 0.4999; do
+        echo "== Hertz 2D, Friction law = $law, nu = $nu"
+        run "$app" "$SC_ROOT/input/hertz2d.xml" --set "Contact/Friction law=$law" \
+          --set "Material/Poisson ratio=$nu" --set "Adaptivity/Cycles=${SC_STUDY_CYCLES:-14}" \
+          --set "Linear Solver/Type=Iterative" --set "Linear Solver/Iterative/Stress block=Multigrid" \
+          --set "Output/Directory=$out/run" > "$out/log" 2>&1 || { tail -3 "$out/log"; continue; }
+        grep -o 'stress multigrid: .*' "$out/log" | sed 's/^/  /' > "$out/levels"
+        /usr/bin/python3 - "$out/run/summary.json" "$out/levels" <<'PY'
+import json, sys
+cycles = json.load(open(sys.argv[1]))["cycles"]
+levels = open(sys.argv[2]).read().splitlines()
+for i, c in enumerate(cycles):
+    print(f"cycle {i:2d} DOFs {c['dofs']['total']:7d} iterations {c['linear_iterations']['per_solve']} {levels[i].strip() if i < len(levels) else ''}")
+PY
+      done
+    done
+    rm -rf "$out" ;;
+  *) echo "solver-study: unknown study '$what' (iterations, cost, large, contact)" >&2; exit 1 ;;
 esac

@@ -139,8 +139,9 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                   "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §\"Linear solvers\"): MUMPS or KLU2 (exact: "
                   "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
                   "block); Multigrid (one geometric V-cycle with vertex-patch (2D) or edge-patch (3D) "
-                  "smoothers on the nested hierarchy; C++ API only: the application does not "
-                  "keep the hierarchy yet); or MueLu (smoothed aggregation AMG, one V-cycle: not robust, "
+                  "smoothers on the hierarchy of the run's nested meshes, which the application "
+                  "keeps, levels chosen per adaptive cycle; with contact in 2D at degree 1, "
+                  "docs/solvers.md \"Contact with the stress multigrid\"); or MueLu (smoothed aggregation AMG, one V-cycle: not robust, "
                   "the kernel of div; offered for comparison). SuperLU is not in Debian's "
                   "Trilinos.");
     declareInt(il, "Multigrid smoother degree", 0,
