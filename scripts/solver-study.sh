@@ -44,10 +44,16 @@ case "$what" in
     for law in None Coulomb; do
       for nu in 0.28 0.4999; do
         echo "== Hertz 2D, Friction law = $law, nu = $nu"
-        run "$app" "$SC_ROOT/input/hertz2d.xml" --set "Contact/Friction law=$law" \
+        uptime
+        rc=0
+        "$app" "$SC_ROOT/input/hertz2d.xml" --set "Contact/Friction law=$law" \
           --set "Material/Poisson ratio=$nu" --set "Adaptivity/Cycles=${SC_STUDY_CYCLES:-14}" \
           --set "Linear Solver/Type=Iterative" --set "Linear Solver/Iterative/Stress block=Multigrid" \
-          --set "Output/Directory=$out/run" > "$out/log" 2>&1 || { tail -3 "$out/log"; continue; }
+          --set "Output/Directory=$out/run" > "$out/log" 2>&1 || rc=$?
+        uptime
+        [ $rc -eq 0 ] || echo "  exit $rc: $(grep -v '^-*$' "$out/log" | tail -1)"
+        echo "  semismooth Newton failures (fixed-point fallback): $(grep -c 'falling back to the Coulomb fixed point' "$out/log" || true)"
+        [ -f "$out/run/summary.json" ] || continue
         grep -o 'stress multigrid: .*' "$out/log" | sed 's/^/  /' > "$out/levels"
         /usr/bin/python3 - "$out/run/summary.json" "$out/levels" <<'PY'
 import json, sys
