@@ -326,7 +326,17 @@ void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
     params->set("Convergence Tolerance", tol);
     solver->setParameters(params);
     solver->setProblem(problem);
-    solver->solve();
+    try {
+      solver->solve();
+    } catch (const std::exception& e) {
+      // Belos throws when its iteration breaks down (MINRES: an indefinite preconditioner or
+      // operator, seen with the stress multigrid on adaptive contact meshes, docs/solvers.md):
+      // a convergence error naming the solver and the remedy, not an anonymous exception
+      SC_THROW_IF(true, sc::core::ConvergenceError,
+                  name() << ": the Krylov iteration broke down after " << iterations
+                         << " iterations (" << e.what()
+                         << "). Try Linear Solver/Type = MUMPS, or a Stress block of MUMPS or KLU2.");
+    }
     iterations += solver->getNumIters();
     const double previous = residual;
     residual = relativeResidual();
