@@ -52,6 +52,15 @@ NOT_PARTS = {"total", "contact_normal_signed", "stress_energy_norm", "relative",
 STATUS_COLOURS = {"free": "0.6", "stick": "tab:red", "slip": "tab:blue"}
 
 
+def save(fig, plt, out, name):
+    """Lay the figure out, write it as out/name at 120 dpi, close it; the path written."""
+    fig.tight_layout()
+    path = os.path.join(out, name)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def load_summary(directory):
     path = os.path.join(directory, "summary.json")
     if not os.path.exists(path):
@@ -137,11 +146,7 @@ def plot_eta(summary, plt, out):
     ax.set_ylabel("estimate")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(out, "eta.png")
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, plt, out, "eta.png")
 
 
 def last_contact_csv(directory, cycle):
@@ -257,11 +262,7 @@ def plot_contact(summary, directory, cycle, plt, out, name="contact_traction.png
     span = max((abs(v) for v in active), default=0.0)
     if span > 0:  # zoom on the zone (the free points extend over the whole contact boundary)
         ax2.set_xlim((-1.5 * span if dim == 2 else 0.0), 1.5 * span)
-    fig.tight_layout()
-    path = os.path.join(out, name)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, plt, out, name)
 
 
 def read_history(directory):
@@ -382,11 +383,7 @@ def plot_load_history(summary, directory, plt, out, name="load_history.png"):
     name_of_run = param(summary, "Problem", "Name", default="")
     if name_of_run:
         fig.suptitle(name_of_run, fontsize=9)
-    fig.tight_layout()
-    path = os.path.join(out, name)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, plt, out, name)
 
 
 def xdmf_step(directory, summary, cycle):
@@ -456,11 +453,7 @@ def plot_mesh(summary, directory, cycle, plt, out):
     ax.triplot(tri, color="black", lw=0.1, alpha=0.4)
     ax.set_aspect("equal")
     ax.set_title(f"mesh and error indicator, {name} ({len(cells)} elements)")
-    fig.tight_layout()
-    path = os.path.join(out, "mesh_eta.png")
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, plt, out, "mesh_eta.png")
 
 
 def domain_fields(directory, summary, cycle, names):
@@ -552,11 +545,7 @@ def plot_deformed(summary, directory, cycle, plt, out, scale=None, name="deforme
         ax.set_ylabel("y")
     if title:
         fig.suptitle(title, fontsize=11)
-    fig.tight_layout()
-    path = os.path.join(out, name)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, plt, out, name)
 
 
 def main():
