@@ -25,6 +25,8 @@ import sys
 import time
 import zlib
 
+from run_deck import run_deck
+
 WIDTH, HEIGHT = 1000, 450
 
 
@@ -154,12 +156,7 @@ def start_xvfb():
 
 def check(args, pvpython, env):
 
-    shutil.rmtree(args.out, ignore_errors=True)
-    run = [args.app, args.deck, "--quiet", "--output", args.out]
-    for s in args.sets:
-        run += ["--set", s]
-    if subprocess.run(run).returncode != 0:
-        print("FAILED: the run failed:", " ".join(run))
+    if not run_deck(args.app, args.deck, args.out, args.sets):
         return 1
     png = os.path.join(args.out, "picture.png")
     cmd = [pvpython, "--force-offscreen-rendering", args.script, args.out, "--output", png,

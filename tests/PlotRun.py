@@ -15,9 +15,10 @@ python3-matplotlib, python3-h5py, for /usr/bin/python3), 1 on a failed check.
 import argparse
 import json
 import os
-import shutil
 import subprocess
 import sys
+
+from run_deck import run_deck
 
 
 def main():
@@ -38,12 +39,7 @@ def main():
               "Debian: apt-get install python3-matplotlib python3-h5py")
         return 77
 
-    shutil.rmtree(args.out, ignore_errors=True)
-    run = [args.app, args.deck, "--quiet", "--output", args.out]
-    for s in args.sets:
-        run += ["--set", s]
-    if subprocess.run(run).returncode != 0:
-        print("FAILED: the run failed:", " ".join(run))
+    if not run_deck(args.app, args.deck, args.out, args.sets):
         return 1
     plot = subprocess.run([sys.executable, args.script, args.out], capture_output=True, text=True)
     print(plot.stdout + plot.stderr, end="")
