@@ -44,7 +44,8 @@ Teuchos::RCP<const Teuchos::ParameterList> getValidParameters()
     add("Body Force", core::BodyForce::getValidParameters(),
         "Body force f in div σ + f = 0, e.g. gravity (docs/user-guide.md \"Loads and supports\").");
     add("Contact", contact::ContactSettings::getValidParameters(),
-        "Rigid obstacle and friction law, for boundary parts of Type Contact (docs/theory.md §\"Contact and friction\").");
+        "Rigid obstacle and friction law, for boundary parts of Type Contact (docs/theory.md "
+        "§\"Contact and friction\").");
     add("Load steps", core::LoadSteps::getValidParameters(),
         "Quasi-static load steps with friction on the slip increment (docs/theory.md "
         "§\"Load steps\"); none: one step at t = 1.");
@@ -74,11 +75,10 @@ void printValidParameters(std::ostream& out)
 
 std::string defaultDeckPath()
 {
-  if (const char* env = std::getenv("STRESSCONTACT_DEFAULT_DECK"))
-    return env;
-  for (const std::string& dir : {std::string(SC_SOURCE_INPUT_DIR), std::string(SC_INSTALL_INPUT_DIR)})
-    if (!dir.empty() && std::ifstream(dir + "/hertz2d.xml"))
-      return dir + "/hertz2d.xml";
+  if (const char* env = std::getenv("STRESSCONTACT_DEFAULT_DECK")) return env;
+  for (const std::string& dir :
+       {std::string(SC_SOURCE_INPUT_DIR), std::string(SC_INSTALL_INPUT_DIR)})
+    if (!dir.empty() && std::ifstream(dir + "/hertz2d.xml")) return dir + "/hertz2d.xml";
   SC_THROW_IF(true, core::InputError,
               "no input deck given and the default deck hertz2d.xml was found neither in '"
                   << SC_SOURCE_INPUT_DIR << "' nor in '" << SC_INSTALL_INPUT_DIR

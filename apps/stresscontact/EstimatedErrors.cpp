@@ -34,8 +34,7 @@ std::map<std::string, double> quantitiesOf(const Json& c)
     for (const char* key : {"half_width", "radius", "equivalent_half_width", "equivalent_radius",
                             "max_pressure", "stick_half_width", "stick_radius",
                             "equivalent_stick_half_width", "equivalent_stick_radius"})
-      if (ct.contains(key) && ct[key].is_number())
-        q[key] = ct[key].get<double>();
+      if (ct.contains(key) && ct[key].is_number()) q[key] = ct[key].get<double>();
   }
   if (c.contains("reactions"))
     for (const auto& [part, r] : c["reactions"].items())
@@ -49,22 +48,21 @@ EstimatedErrors estimateErrors(const Json& cycles, const CycleResults& r, int di
                                int loadStep)
 {
   EstimatedErrors out;
-  if (!r.solved || !r.estimate)
-    return out;
+  if (!r.solved || !r.estimate) return out;
   // This cycle as summary.json will record it (the same names and norms as the history's).
   Json current;
   if (r.contact) {
     const auto& cs = r.contact->summary;
-    current["contact"] = {{"force", std::vector<double>(cs.force.begin(), cs.force.begin() + dim)},
-                          {dim == 2 ? "half_width" : "radius", cs.zoneSize},
-                          {dim == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
-                          {"max_pressure", cs.maxPressure},
-                          {dim == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
-                          {dim == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
-                           cs.equivalentStickZoneSize}};
+    current["contact"] = {
+        {"force", std::vector<double>(cs.force.begin(), cs.force.begin() + dim)},
+        {dim == 2 ? "half_width" : "radius", cs.zoneSize},
+        {dim == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
+        {"max_pressure", cs.maxPressure},
+        {dim == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
+        {dim == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
+         cs.equivalentStickZoneSize}};
   }
-  if (r.forces)
-    current["reactions"] = r.forces->reactions;
+  if (r.forces) current["reactions"] = r.forces->reactions;
   const auto now = quantitiesOf(current);
 
   // The earlier cycles of this load step, solved and estimated, in order.
@@ -72,8 +70,7 @@ EstimatedErrors estimateErrors(const Json& cycles, const CycleResults& r, int di
   std::vector<std::map<std::string, double>> values;
   for (const Json& c : cycles) {
     const int step = c.contains("load_step") ? c["load_step"]["step"].get<int>() : 0;
-    if (step != loadStep || !c.contains("dofs") || !c.contains("eta"))
-      continue;
+    if (step != loadStep || !c.contains("dofs") || !c.contains("eta")) continue;
     dofsEta.emplace_back(c["dofs"]["total"].get<double>(), c["eta"]["total"].get<double>());
     values.push_back(quantitiesOf(c));
   }
@@ -97,7 +94,8 @@ EstimatedErrors estimateErrors(const Json& cycles, const CycleResults& r, int di
     const double stickFloor = std::abs(cs.stickZoneSize - cs.equivalentStickZoneSize);
     const std::string width = dim == 2 ? "half_width" : "radius";
     const std::string stick = dim == 2 ? "stick_half_width" : "stick_radius";
-    const auto add = [&](const std::string& key, double floor, const adapt::QuantityErrorSettings& how) {
+    const auto add = [&](const std::string& key, double floor,
+                         const adapt::QuantityErrorSettings& how) {
       out.contact.emplace_back(key, estimate(key, floor, how));
       return out.contact.back().second;
     };
@@ -120,8 +118,7 @@ EstimatedErrors estimateErrors(const Json& cycles, const CycleResults& r, int di
     target("force", now.at("force"), force);
     target("width", cs.zoneSize, zone);
     target("pressure", cs.maxPressure, pressure);
-    if (friction)
-      target("stick width", cs.stickZoneSize, stickError);
+    if (friction) target("stick width", cs.stickZoneSize, stickError);
   }
   for (const auto& [name, value] : now)
     if (name.rfind("reaction:", 0) == 0)

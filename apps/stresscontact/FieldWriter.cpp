@@ -23,15 +23,15 @@ void writeCycleFields(io::XdmfWriter& writer, const mesh::SimplexMesh& mesh,
   // requires (mesh::vertexOwnership).
   const auto& newId = fields.vertices.number;
 
-  io::GridPiece domain("domain", dim == 2 ? io::CellType::Triangle : io::CellType::Tetrahedron, dim);
+  io::GridPiece domain("domain", dim == 2 ? io::CellType::Triangle : io::CellType::Tetrahedron,
+                       dim);
   const auto& x = mesh.coordinates();
   for (int v : fields.vertices.owned)
     for (int d = 0; d < dim; ++d)
       domain.coordinates.push_back(x[static_cast<std::size_t>(v) * dim + d]);
   std::vector<double> measure;
   for (std::size_t e = 0; e < ne; ++e) {
-    if (elementOwner[e] != rank)
-      continue;
+    if (elementOwner[e] != rank) continue;
     const int* ev = mesh.elementVertices(static_cast<int>(e));
     for (int i = 0; i < nodesPerElement; ++i)
       domain.connectivity.push_back(newId[ev[i]]);
@@ -63,8 +63,7 @@ void writeCycleFields(io::XdmfWriter& writer, const mesh::SimplexMesh& mesh,
   boundary.geometryFrom = "domain";
   std::vector<int> boundaryId;
   for (int f : mesh.boundaryFaces()) {
-    if (elementOwner[mesh.faceElements(f)[0]] != rank)
-      continue;
+    if (elementOwner[mesh.faceElements(f)[0]] != rank) continue;
     const int* fv = mesh.faceVertices(f);
     for (int i = 0; i < dim; ++i)
       boundary.connectivity.push_back(newId[fv[i]]);
@@ -75,8 +74,7 @@ void writeCycleFields(io::XdmfWriter& writer, const mesh::SimplexMesh& mesh,
     const auto means = contact::faceMeans(results.contact->points);
     std::vector<double> pressure, shear;
     for (int f : mesh.boundaryFaces()) {
-      if (elementOwner[mesh.faceElements(f)[0]] != rank)
-        continue;
+      if (elementOwner[mesh.faceElements(f)[0]] != rank) continue;
       auto it = means.find(f);
       pressure.push_back(it == means.end() ? 0.0 : it->second.pressure);
       shear.push_back(it == means.end() ? 0.0 : it->second.shear);

@@ -12,7 +12,10 @@
 namespace sc::app {
 namespace {
 
-double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+double norm(const std::array<double, 3>& v)
+{
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
 
 std::vector<double> firstComponents(const std::array<double, 3>& v, int d)
 {
@@ -34,21 +37,21 @@ CycleForces computeCycleForces(const assembly::MixedElasticityAssembler& assembl
   CycleForces out;
   std::array<double, 3> supports{0, 0, 0}, loads{0, 0, 0}, contact{0, 0, 0};
   double largestPart = 0.0;  // supports may cancel each other (rollers at both ends of a bar)
-  if (contactForce)
-    contact = *contactForce;
+  if (contactForce) contact = *contactForce;
   for (const auto& p : parts) {
     const auto* bc = data.boundaryConditions.find(p.part);
     const auto type = bc ? bc->type : core::BoundaryType::Free;
     if (type == core::BoundaryType::Contact)
       continue;  // the contact force is the summary's (Σ_p ∫_F w_p τ_p, the same integral)
-    const bool support = type == core::BoundaryType::Displacement || type == core::BoundaryType::Symmetry ||
+    const bool support = type == core::BoundaryType::Displacement ||
+                         type == core::BoundaryType::Symmetry ||
                          type == core::BoundaryType::NormalDisplacement;
     for (int i = 0; i < 3; ++i)
       (support ? supports : loads)[i] += p.force[i];
     largestPart = std::max(largestPart, norm(p.force));
-    if (!support)
-      continue;
-    nlohmann::ordered_json r = {{"type", core::toString(type)}, {"force", firstComponents(p.force, d)}};
+    if (!support) continue;
+    nlohmann::ordered_json r = {{"type", core::toString(type)},
+                                {"force", firstComponents(p.force, d)}};
     if (d == 3)
       r["moment"] = std::vector<double>(p.moment.begin(), p.moment.end());
     else
@@ -58,7 +61,8 @@ CycleForces computeCycleForces(const assembly::MixedElasticityAssembler& assembl
   std::array<double, 3> sum{0, 0, 0};
   for (int i = 0; i < 3; ++i)
     sum[i] = supports[i] + loads[i] + contact[i] + body[i];
-  const double scale = std::max({norm(supports), norm(loads), norm(contact), norm(body), largestPart});
+  const double scale =
+      std::max({norm(supports), norm(loads), norm(contact), norm(body), largestPart});
   out.balance = {{"supports", firstComponents(supports, d)},
                  {"loads", firstComponents(loads, d)},
                  {"contact", firstComponents(contact, d)},
@@ -73,8 +77,7 @@ std::string forcesBrief(const nlohmann::ordered_json& cycle)
   os.precision(4);
   if (cycle.contains("reactions"))
     for (const auto& [part, r] : cycle["reactions"].items()) {
-      if (r.value("type", "") != "Displacement")
-        continue;
+      if (r.value("type", "") != "Displacement") continue;
       os << "reaction " << part << " (";
       const auto& f = r["force"];
       for (std::size_t i = 0; i < f.size(); ++i)
@@ -84,8 +87,7 @@ std::string forcesBrief(const nlohmann::ordered_json& cycle)
   if (cycle.contains("contact") && cycle["contact"].contains("area")) {
     const auto& c = cycle["contact"];
     os << "contact area " << c["area"].get<double>();
-    if (c.value("stick_area", 0.0) > 0.0)
-      os << " (stick " << c["stick_area"].get<double>() << ")";
+    if (c.value("stick_area", 0.0) > 0.0) os << " (stick " << c["stick_area"].get<double>() << ")";
     os << ", ";
   }
   if (cycle.contains("force_balance") && cycle["force_balance"].contains("relative_residual"))

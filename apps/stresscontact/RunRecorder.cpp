@@ -12,17 +12,15 @@
 namespace sc::app {
 
 RunRecorder::RunRecorder(const Teuchos::Comm<int>& comm, const core::Progress& progress,
-                         io::RunSummary& summary, std::string directory, int dim,
-                         bool hasContact)
-  : comm_(comm), progress_(progress), summary_(summary), directory_(std::move(directory)),
-    dim_(dim), hasContact_(hasContact)
+                         io::RunSummary& summary, std::string directory, int dim, bool hasContact)
+    : comm_(comm), progress_(progress), summary_(summary), directory_(std::move(directory)),
+      dim_(dim), hasContact_(hasContact)
 {
 }
 
 void RunRecorder::writeContactTable(const CycleResults& results) const
 {
-  if (!results.contact)
-    return;
+  if (!results.contact) return;
   const auto header = contact::csvColumns(dim_);
   io::CsvWriter csv(header);
   for (const auto& p : results.contact->points) {
@@ -50,20 +48,21 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
     const auto& cs = results.contact->summary;
     const auto& st = results.contact->statistics;
     std::vector<double> force(cs.force.begin(), cs.force.begin() + d);
-    c["contact"] = {{"force", force},
-                    {d == 2 ? "half_width" : "radius", cs.zoneSize},
-                    {"max_pressure", cs.maxPressure},
-                    {"min_pressure", cs.minPressure},
-                    {"area", cs.area},
-                    {"stick_area", cs.stickArea},
-                    {d == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
-                    {d == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
-                    {d == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
-                     cs.equivalentStickZoneSize},
-                    {"points", {{"free", cs.numFree}, {"stick", cs.numStick}, {"slip", cs.numSlip}}},
-                    {"newton_iterations", st.newtonIterations},
-                    {"cycle_remedies", st.remedies},
-                    {"fixed_point_iterations", st.fixedPointIterations}};
+    c["contact"] = {
+        {"force", force},
+        {d == 2 ? "half_width" : "radius", cs.zoneSize},
+        {"max_pressure", cs.maxPressure},
+        {"min_pressure", cs.minPressure},
+        {"area", cs.area},
+        {"stick_area", cs.stickArea},
+        {d == 2 ? "stick_half_width" : "stick_radius", cs.stickZoneSize},
+        {d == 2 ? "equivalent_half_width" : "equivalent_radius", cs.equivalentZoneSize},
+        {d == 2 ? "equivalent_stick_half_width" : "equivalent_stick_radius",
+         cs.equivalentStickZoneSize},
+        {"points", {{"free", cs.numFree}, {"stick", cs.numStick}, {"slip", cs.numSlip}}},
+        {"newton_iterations", st.newtonIterations},
+        {"cycle_remedies", st.remedies},
+        {"fixed_point_iterations", st.fixedPointIterations}};
     // Hertz's values from the computed load (contact/Hertz.hpp): the ratios say how close the
     // run is.
     if (const auto& h = results.contact->hertz)
@@ -78,8 +77,9 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
                                   {"algebraic_error", st.algebraicError}};
     c["nonlinear_iterations"] = st.newtonIterations;
     std::ostringstream os;
-    os << "force (" << force[0] << ", " << force[1] << (d == 3 ? ", " + std::to_string(force[2]) : "")
-       << "), " << (d == 2 ? "half-width " : "radius ") << cs.zoneSize << " (from the area "
+    os << "force (" << force[0] << ", " << force[1]
+       << (d == 3 ? ", " + std::to_string(force[2]) : "") << "), "
+       << (d == 2 ? "half-width " : "radius ") << cs.zoneSize << " (from the area "
        << cs.equivalentZoneSize << "), max pressure " << cs.maxPressure << ", stick "
        << cs.stickZoneSize << " (" << cs.numStick << " stick, " << cs.numSlip << " slip points)";
     progress_.report("contact", os.str());
@@ -91,8 +91,7 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
       eb.precision(3);
       for (const auto& [key, e] : ee->contact) {
         j[key] = e ? nlohmann::ordered_json(*e) : nlohmann::ordered_json(nullptr);
-        if (key.rfind("equivalent_", 0) == 0)
-          continue;  // in summary.json only
+        if (key.rfind("equivalent_", 0) == 0) continue;  // in summary.json only
         eb << (eb.tellp() > 0 ? ", " : "") << key;
         if (e)
           eb << " ± " << *e;
@@ -116,11 +115,9 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
       eta["stress_energy_error"] = results.stressEnergyError;
       eta["efficiency_index"] = estimate->total() / results.stressEnergyError;
     }
-    if (!marking.uniform && stopReason.empty())
-      eta["marked_elements"] = marking.elements.size();
+    if (!marking.uniform && stopReason.empty()) eta["marked_elements"] = marking.elements.size();
   }
-  if (!stopReason.empty())
-    c["stop_reason"] = stopReason;
+  if (!stopReason.empty()) c["stop_reason"] = stopReason;
   // The accuracy targets against this cycle's error bars (docs/adaptivity.md).
   if (!results.targets.empty()) {
     auto& t = c["accuracy_targets"];
@@ -129,9 +126,9 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
       t.push_back({{"quantity", s.name},
                    {"key", s.key},
                    {"target", s.target},
-                   {"estimated_relative_error",
-                    s.relativeError >= 0.0 ? nlohmann::ordered_json(s.relativeError)
-                                           : nlohmann::ordered_json(nullptr)},
+                   {"estimated_relative_error", s.relativeError >= 0.0
+                                                    ? nlohmann::ordered_json(s.relativeError)
+                                                    : nlohmann::ordered_json(nullptr)},
                    {"met", s.met}});
   }
   if (results.solved) {
@@ -173,8 +170,8 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
                      {"stress_l2_relative", e->stress / e->stressNorm},
                      {"displacement_l2_relative", e->displacement / e->displacementNorm}};
       std::ostringstream os;
-      os << "|σ−σh| = " << e->stress << ", |div(σ−σh)| = " << e->stressDiv << ", |u−uh| = "
-         << e->displacement << ", |θ−θh| = " << e->rotation;
+      os << "|σ−σh| = " << e->stress << ", |div(σ−σh)| = " << e->stressDiv
+         << ", |u−uh| = " << e->displacement << ", |θ−θh| = " << e->rotation;
       progress_.report("errors", os.str());
     }
   }
@@ -198,12 +195,9 @@ void RunRecorder::recordCost(const CycleResults& results,
   // The cycle's one-line summary: size, η, Newton steps, seconds per phase, peak memory.
   std::ostringstream os;
   os << std::setprecision(4);
-  if (results.solved)
-    os << results.dofs.total << " DOFs, ";
-  if (results.estimate)
-    os << "eta " << results.estimate->total() << ", ";
-  if (results.contact)
-    os << results.contact->statistics.newtonIterations << " Newton steps, ";
+  if (results.solved) os << results.dofs.total << " DOFs, ";
+  if (results.estimate) os << "eta " << results.estimate->total() << ", ";
+  if (results.contact) os << results.contact->statistics.newtonIterations << " Newton steps, ";
   os << forcesBrief(c);
   os << std::fixed << std::setprecision(3);
   double total = 0.0;
@@ -211,10 +205,10 @@ void RunRecorder::recordCost(const CycleResults& results,
     total += seconds;
   os << "seconds " << total << " (";
   bool first = true;
-  for (const char* phase : {"solve", "reconstruct", "estimate", "mark", "refine", "transfer", "output"}) {
+  for (const char* phase :
+       {"solve", "reconstruct", "estimate", "mark", "refine", "transfer", "output"}) {
     const auto it = timings.find(phase);
-    if (it == timings.end())
-      continue;
+    if (it == timings.end()) continue;
     os << (first ? "" : ", ") << phase << " " << it->second;
     first = false;
   }

@@ -62,8 +62,8 @@ namespace sc::app {
 Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                        Teuchos::RCP<Teuchos::ParameterList> params, std::string deckPath,
                        bool quiet)
-  : comm_(std::move(comm)), params_(std::move(params)), deckPath_(std::move(deckPath)),
-    progress_(comm_, std::cout, quiet), timers_(comm_)
+    : comm_(std::move(comm)), params_(std::move(params)), deckPath_(std::move(deckPath)),
+      progress_(comm_, std::cout, quiet), timers_(comm_)
 {
   problem_ = core::ProblemSettings::fromParameters(params_->sublist("Problem"));
   const int dim = problem_.dimension;
@@ -75,7 +75,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   // Contact data is read (and checked against the dimension) only if the scene has contact.
   if (boundaryConditions_.hasContact()) {
     contact_ = contact::ContactSettings::fromParameters(params_->sublist("Contact"), dim);
-    balancedStopping_ = contact::BalancedStopping::fromParameters(params_->sublist("Contact").sublist("Newton"));
+    balancedStopping_ =
+        contact::BalancedStopping::fromParameters(params_->sublist("Contact").sublist("Newton"));
     // The balanced rule sets Krylov tolerances: with a direct solver it would change nothing (the
     // Newton loop stops on a settled active set by either rule), so it is refused, not ignored.
     const std::string type = params_->sublist("Linear Solver").get<std::string>("Type");
@@ -91,17 +92,16 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   if (const std::string w = estimator::largeFrictionWarning(contact_);
       boundaryConditions_.hasContact() && !w.empty()) {
     warnings_.push_back(w);
-    if (comm_->getRank() == 0)
-      std::cerr << "stresscontact: warning: " << w << std::endl;
+    if (comm_->getRank() == 0) std::cerr << "stresscontact: warning: " << w << std::endl;
   }
   // The frictionless Hertz scenes are compared with Hertz's values for their computed load
   // (contact::compareWithHertz).
   if (boundaryConditions_.hasContact() && !contact_.needsFriction() &&
       (meshSettings_.source == "Half disc" || meshSettings_.source == "Half ball"))
     hertzRadius_ = meshSettings_.radius;
-  discretization_ = core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
-  if (boundaryConditions_.hasContact())
-    contact::checkContactDegree(dim, discretization_.degree);
+  discretization_ =
+      core::DiscretizationSettings::fromParameters(params_->sublist("Discretization"));
+  if (boundaryConditions_.hasContact()) contact::checkContactDegree(dim, discretization_.degree);
   // Load steps: the tables must have a row per step; the run starts with step 1's data.
   loadSteps_ = core::LoadSteps::fromParameters(params_->sublist("Load steps"), dim);
   boundaryConditions_.checkStepTables(loadSteps_.numSteps(), dim);
@@ -109,10 +109,11 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
   // Friction over several load steps is verified in 2D at degree 1 (contact_load_step_tests,
   // run_cattaneo_mindlin2d); the 3D slip-increment rows and degree 2 have no test yet, so they
   // are refused rather than trusted (docs/contact.md "Load steps").
-  SC_THROW_IF(loadSteps_.numSteps() > 1 && boundaryConditions_.hasContact() && contact_.needsFriction() &&
-                  (dim != 2 || discretization_.degree != 1),
+  SC_THROW_IF(loadSteps_.numSteps() > 1 && boundaryConditions_.hasContact() &&
+                  contact_.needsFriction() && (dim != 2 || discretization_.degree != 1),
               core::InputError,
-              "'Load steps/Times' has " << loadSteps_.numSteps() << " steps with friction in " << dim
+              "'Load steps/Times' has "
+                  << loadSteps_.numSteps() << " steps with friction in " << dim
                   << "D at 'Discretization/Degree' = " << discretization_.degree
                   << ": friction over load steps is verified in 2D at degree 1 only. Use one load "
                      "step, no friction, or a 2D scene at degree 1.");
@@ -142,14 +143,18 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
         {"Target width error", adaptivity_.targetWidthError, false},
         {"Target pressure error", adaptivity_.targetPressureError, false},
         {"Target stick width error", adaptivity_.targetStickError, true}}) {
-    SC_THROW_IF(value > 0.0 && !boundaryConditions_.hasContact(), core::InputError,
-                "'Adaptivity/" << key << "' = " << value
-                    << " is a target on a contact quantity, but the scene has no boundary part of "
-                       "Type Contact. Use 'Adaptivity/Target error' (η relative) or remove the key.");
-    SC_THROW_IF(value > 0.0 && needsFriction && !contact_.needsFriction(), core::InputError,
-                "'Adaptivity/" << key << "' = " << value
-                    << " is a target on the stick zone, but the scene has no friction ('Contact/"
-                       "Friction law' None, or a zero coefficient or bound): there is no stick zone.");
+    SC_THROW_IF(
+        value > 0.0 && !boundaryConditions_.hasContact(), core::InputError,
+        "'Adaptivity/"
+            << key << "' = " << value
+            << " is a target on a contact quantity, but the scene has no boundary part of "
+               "Type Contact. Use 'Adaptivity/Target error' (η relative) or remove the key.");
+    SC_THROW_IF(
+        value > 0.0 && needsFriction && !contact_.needsFriction(), core::InputError,
+        "'Adaptivity/"
+            << key << "' = " << value
+            << " is a target on the stick zone, but the scene has no friction ('Contact/"
+               "Friction law' None, or a zero coefficient or bound): there is no stick zone.");
   }
   loop_ = std::make_unique<adapt::AdaptiveLoop>(adaptivity_, comm_, &progress_, &timers_);
   if (loadSteps_.numSteps() > 1) {
@@ -168,7 +173,8 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
       boundaryConditions_.boundariesOfType(core::BoundaryType::NormalDisplacement).empty()) {
     std::ostringstream given;
     for (const auto& bc : boundaryConditions_.conditions)
-      given << (given.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' (" << core::toString(bc.type) << ")";
+      given << (given.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' ("
+            << core::toString(bc.type) << ")";
     SC_THROW_IF(true, core::InputError,
                 "the deck has no boundary of Type 'Displacement' ('Boundary Conditions' gives "
                     << (given.tellp() > 0 ? given.str() : std::string("none"))
@@ -183,12 +189,12 @@ Simulation::Simulation(Teuchos::RCP<const Teuchos::Comm<int>> comm,
                                      problem_.manufacturedWavenumber);
   for (const auto& bc : boundaryConditions_.conditions)
     SC_THROW_IF(bc.fromExactSolution && !exact_, core::InputError,
-                "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution' needs "
+                "'Boundary Conditions/"
+                    << bc.boundary << "/Data' = 'Exact solution' needs "
                     << "'Problem/Exact solution' (valid: 'Manufactured smooth', 'Linear patch'), "
                     << "but it is 'None'.");
   // Type = Auto: resolved per cycle from the system's size (setupElasticity); MUMPS until then.
   solver_ = solverPolicy_->create(0);
-
 }
 
 Simulation::~Simulation() = default;
@@ -200,8 +206,7 @@ void Simulation::applyLoadStep(int step)
   boundaryConditions_ = deckConditions_.atStep(step, dim);
   bodyForce_ = deckBodyForce_.atStep(step, dim);
   core::Expression::setLoadTime(loadSteps_.times[step]);
-  if (!boundaryConditions_.hasContact())
-    return;
+  if (!boundaryConditions_.hasContact()) return;
   contact_ = deckContact_;
   balancedStopping_.setDiscretisationError(-1.0);  // η of another load is not this step's
   const auto shift = loadSteps_.obstacleDisplacementAt(step, dim);
@@ -218,21 +223,19 @@ void Simulation::setupMesh()
   // rank so that the estimates of MeshFactory and of the adaptive steps agree (docs/mesh.md).
   double available = 0.0;
   std::string source;
-  if (comm_->getRank() == 0)
-    available = mesh::availableMemoryBytes(&source);
+  if (comm_->getRank() == 0) available = mesh::availableMemoryBytes(&source);
   core::broadcast(*comm_, 0, available);
   core::broadcast(*comm_, 0, source);
   // The program's own memory before any mesh, on all ranks: a Memory limit counts it too.
   const double baseline = core::sumOverRanks(*comm_, mesh::residentMemoryBytes());
-  limit_ = mesh::makeResourceLimit(meshSettings_.memoryLimitGB,
-                                   problem_.dimension, discretization_.degree, comm_->getSize(),
-                                   adaptivity_.maxDofs, available, source, baseline);
+  limit_ = mesh::makeResourceLimit(meshSettings_.memoryLimitGB, problem_.dimension,
+                                   discretization_.degree, comm_->getSize(), adaptivity_.maxDofs,
+                                   available, source, baseline);
   // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
   refiner_ = mesh::MeshFactory::build(meshSettings_, problem_.dimension, *comm_,
                                       /*splitBoundarySimplices=*/false, limit_);
   mesh_ = refiner_->mesh();
-  if (hierarchy_)
-    hierarchy_->addMesh(mesh_, {});
+  if (hierarchy_) hierarchy_->addMesh(mesh_, {});
   // Curved contact faces: Mesh/Geometry order = 2 on a domain with curved parts (the Hertz
   // scenes' contact boundary; a Gmsh geometry's or a quadratic file's curved parts). Known once
   // the geometry is, which for a Gmsh file is after reading it.
@@ -240,30 +243,28 @@ void Simulation::setupMesh()
       mesh::MeshFactory::hasCurvedElements(meshSettings_, *refiner_))
     contact::checkCurvedContact(problem_.dimension, discretization_.degree, contact_.frame);
   // How faithful the domain is (a linear file's curved part is its polygon, and stays so).
-  if (const auto geometry = refiner_->geometry(); !geometry.is_null() && !geometry->warning().empty()) {
+  if (const auto geometry = refiner_->geometry();
+      !geometry.is_null() && !geometry->warning().empty()) {
     warnings_.push_back(geometry->warning());
     if (comm_->getRank() == 0)
       std::cerr << "stresscontact: warning: " << geometry->warning() << std::endl;
   }
-  boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(),
-                                         meshSettings_.source);
+  boundaryConditions_.checkBoundaryNames(mesh_->boundaryNames(), meshSettings_.source);
   boundaryConditions_.checkPressureDetermined(mesh_->boundaryNames(), material_);
   // A plane obstacle may hold the body along its normal, when nothing else does.
   assembly::ContactPlane plane;
   if (boundaryConditions_.hasContact() && contact_.obstacle == "Plane")
     std::copy(contact_.obstacleNormal.begin(), contact_.obstacleNormal.end(), plane.normal.begin());
   const bool contactHoldsBody =
-      assembly::checkLoadsAndSupports(*mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
-                                      boundaryConditions_.hasContact() && contact_.obstacle == "Plane"
-                                          ? &plane
-                                          : nullptr) >= 0;
+      assembly::checkLoadsAndSupports(
+          *mesh_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
+          boundaryConditions_.hasContact() && contact_.obstacle == "Plane" ? &plane : nullptr) >= 0;
   assembly::checkEveryBodyIsHeld(*mesh_, boundaryConditions_);  // a file's mesh may hold several
   if (boundaryConditions_.hasContact()) {
     contactProblem_ = std::make_unique<contact::ContactProblem>(
         material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact), comm_);
     contactProblem_->setContactHoldsBody(contactHoldsBody);
-    if (balancedStopping_.isBalanced())
-      contactProblem_->setBalancedStopping(&balancedStopping_);
+    if (balancedStopping_.isBalanced()) contactProblem_->setBalancedStopping(&balancedStopping_);
     contactProblem_->setStepCallback([this](int step, long long changes, double seconds) {
       std::ostringstream os;
       os << "Newton step " << step << ": " << changes << " points changed state";
@@ -303,8 +304,9 @@ void Simulation::setupMesh()
   // Every rank needs an element of the initial mesh; found here, before anything is written
   // (the partitioner would find it only after the output directory exists).
   SC_THROW_IF(mesh_->numElements() < comm_->getSize(), core::InputError,
-              "the initial mesh has " << mesh_->numElements() << " elements, fewer than the "
-                  << comm_->getSize() << " MPI ranks: make 'Mesh/Initial mesh size' smaller, add "
+              "the initial mesh has "
+                  << mesh_->numElements() << " elements, fewer than the " << comm_->getSize()
+                  << " MPI ranks: make 'Mesh/Initial mesh size' smaller, add "
                   << "'Mesh/Uniform refinements', or run on at most " << mesh_->numElements()
                   << " ranks.");
   warnIfLargeDisplacement();
@@ -319,13 +321,11 @@ void Simulation::warnIfLargeDisplacement() const
   double uMax = 0.0;
   std::string where;
   for (const auto& bc : boundaryConditions_.conditions) {
-    if (bc.type != core::BoundaryType::Displacement || bc.fromExactSolution)
-      continue;
+    if (bc.type != core::BoundaryType::Displacement || bc.fromExactSolution) continue;
     double n2 = 0.0;
     for (double v : bc.value)
       n2 += v * v;
-    if (std::sqrt(n2) > uMax)
-      uMax = std::sqrt(n2), where = bc.boundary;
+    if (std::sqrt(n2) > uMax) uMax = std::sqrt(n2), where = bc.boundary;
   }
   const int dim = mesh_->dim();
   const auto& x = mesh_->coordinates();
@@ -366,8 +366,7 @@ void Simulation::refine(const adapt::Marking& marking)
     auto t = timers_.scope("transfer");
     contactProblem_->refined(*previous, *refiner_->mesh(), *step);
   }
-  if (hierarchy_)
-    hierarchy_->addMesh(refiner_->mesh(), step->elementParent);
+  if (hierarchy_) hierarchy_->addMesh(refiner_->mesh(), step->elementParent);
   refiner_->forgetHistory();
   mesh_ = refiner_->mesh();
   progress_.report("refine", adaptivity_.marking + ": " + std::to_string(before) + " -> " +
@@ -419,7 +418,8 @@ void Simulation::setupElasticity()
                                 (curved ? ", " + std::to_string(curved->numCurvedElements()) +
                                               " curved (quadratic) elements"
                                         : std::string()));
-  system_->assemble({material_, boundaryConditions_, exact_.get(), bodyForce_});  // "assemble" phase
+  system_->assemble(
+      {material_, boundaryConditions_, exact_.get(), bodyForce_});  // "assemble" phase
   progress_.report("assemble", std::to_string(assembler_->statistics().nonzeros) + " nonzeros");
 }
 
@@ -427,8 +427,7 @@ std::vector<solvers::MultigridLevel> Simulation::multigridLevels()
 {
   // Type = Auto keeps the meshes in 3D but builds levels only for the cycles it solves with the
   // multigrid.
-  if (!hierarchy_ || !solverPolicy_->usesMultigrid(space_->numGlobalDofs()))
-    return {};
+  if (!hierarchy_ || !solverPolicy_->usesMultigrid(space_->numGlobalDofs())) return {};
   auto levels = hierarchy_->levels(*space_);
   std::ostringstream os;
   os << "stress multigrid: " << levels.size() << " level(s), elements";
@@ -446,12 +445,10 @@ void Simulation::solveElasticity()
   // θ: robust in E) and, if Krylov, the block structure; the system without contact rows is
   // symmetric (tractions are eliminated symmetrically).
   solution_ = system_->solve(*solver_, multigridLevels());
-  if (solver_->isIterative())
-    linearIterations_.push_back(solver_->lastSolveStats().iterations);
+  if (solver_->isIterative()) linearIterations_.push_back(solver_->lastSolveStats().iterations);
   std::ostringstream os;
   os << solver_->name() << ", relative residual " << solver_->lastSolveStats().relativeResidual;
-  if (solver_->isIterative())
-    os << ", " << solver_->lastSolveStats().iterations << " iterations";
+  if (solver_->isIterative()) os << ", " << solver_->lastSolveStats().iterations << " iterations";
   progress_.report("solve", os.str());
   solved_ = true;
 }
@@ -470,7 +467,8 @@ void Simulation::solveContact()
     contactProblem_->transferState();
   }
   const contact::ActiveSetSolver& contactSolver = contactProblem_->solver();
-  progress_.report("contact", std::to_string(contactSolver.globalNumPoints()) + " contact points, " +
+  progress_.report("contact", std::to_string(contactSolver.globalNumPoints()) +
+                                  " contact points, " +
                                   (contactSolver.hasFriction() ? "with" : "without") + " friction");
   solution_ = assembler_->createVector();
   {
@@ -504,8 +502,7 @@ void Simulation::warnIfNoContact()
   for (const auto& p : contactProblem_->points())
     active += p.status != contact::PointStatus::Free;
   const long long global = core::sumOverRanks(*comm_, active);
-  if (global > 0 || warnedNoContact_)
-    return;
+  if (global > 0 || warnedNoContact_) return;
   warnedNoContact_ = true;
   const std::string w =
       "no contact point is in contact (every weighted gap stays open), so the contact force is "
@@ -513,18 +510,15 @@ void Simulation::warnIfNoContact()
       "first touches: refine there ('Mesh/Local refinement') or check the obstacle's position "
       "and the prescribed displacement (docs/contact.md).";
   warnings_.push_back(w);
-  if (summary_)
-    summary_->json()["warnings"] = warnings_;
-  if (comm_->getRank() == 0)
-    std::cerr << "stresscontact: warning: " << w << std::endl;
+  if (summary_) summary_->json()["warnings"] = warnings_;
+  if (comm_->getRank() == 0) std::cerr << "stresscontact: warning: " << w << std::endl;
 }
 
 void Simulation::recordSolve()
 {
   CycleResults& r = *results_;
   r.solved = solved_;
-  if (!solved_)
-    return;
+  if (!solved_) return;
   r.dofs = {space_->numStressDofs(), space_->numDisplacementDofs(), space_->numRotationDofs(),
             space_->numGlobalDofs()};
   LinearSolveRecord& ls = r.linearSolve.emplace();
@@ -579,15 +573,16 @@ adapt::CycleEstimate Simulation::estimate(int /*cycle*/)
 
 void Simulation::estimateError()
 {
-  if (!solved_)
-    return;
+  if (!solved_) return;
   const assembly::ElasticityData data{material_, boundaryConditions_, exact_.get(), bodyForce_};
   {
     auto t = timers_.scope("reconstruct");
-    estimator_ = std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);
+    estimator_ =
+        std::make_unique<estimator::ErrorEstimator>(*assembler_, estimatorSettings_, comm_);
     if (boundaryConditions_.hasContact())
       estimator_->addContribution(std::make_shared<estimator::ContactContribution>(
-          *space_, contact_, material_, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact)));
+          *space_, contact_, material_,
+          boundaryConditions_.boundariesOfType(core::BoundaryType::Contact)));
     estimator_->reconstruct(*solution_, data);
   }
   {
@@ -625,9 +620,9 @@ void Simulation::collectResults()
     if (r.contact)
       std::copy(r.contact->summary.force.begin(),
                 r.contact->summary.force.begin() + problem_.dimension, contactForce.begin());
-    r.forces = computeCycleForces(
-        *assembler_, *solution_, {material_, boundaryConditions_, exact_.get(), bodyForce_},
-        r.contact ? &contactForce : nullptr, output_.momentPoint, *comm_);
+    r.forces = computeCycleForces(*assembler_, *solution_,
+                                  {material_, boundaryConditions_, exact_.get(), bodyForce_},
+                                  r.contact ? &contactForce : nullptr, output_.momentPoint, *comm_);
   }
   // The measure of the discrete domain: with curved elements, that of their quadratic maps.
   const double measure = core::sumOverRanks(*comm_, disc::ownedMeasure(*space_));
@@ -642,8 +637,7 @@ void Simulation::collectResults()
   for (int o : elementOwner_)
     ++r.mesh.elementsPerRank[o];
 
-  if (!writer_)
-    return;
+  if (!writer_) return;
   auto t = timers_.scope("output");
   CycleFields& f = r.fields.emplace();
   f.vertices = mesh::vertexOwnership(*mesh_, elementOwner_, comm_->getRank(), comm_->getSize());
@@ -655,17 +649,16 @@ void Simulation::collectResults()
                                          u + problem_.dimension);
     }
   }
-  if (solved_)
-    f.averages = assembly::computeCellAverages(*assembler_, *solution_);
+  if (solved_) f.averages = assembly::computeCellAverages(*assembler_, *solution_);
   if (r.contact)  // the contact points with their point values (ContactFields.hpp)
-    f.contactPoints = contactPointGrid(contactProblem_->solver(), problem_.dimension, discretization_.degree);
+    f.contactPoints =
+        contactPointGrid(contactProblem_->solver(), problem_.dimension, discretization_.degree);
 }
 
 adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marking) const
 {
   adapt::NextMeshForecast f;
-  if (!limit_.active() || space_.is_null() || mesh_->numElements() == 0)
-    return f;  // no limit
+  if (!limit_.active() || space_.is_null() || mesh_->numElements() == 0) return f;  // no limit
   const double n = mesh_->numElements();
   const int d = problem_.dimension;
   // Uniform: exactly 2^d per element; marked: each with its closure, at most a uniform level.
@@ -715,8 +708,7 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
     for (const auto& bc : boundaryConditions_.conditions)
       if (!deckConditions_.find(bc.boundary)->valuesPerStep.empty())
         prescribed[bc.boundary] = bc.value;
-    if (!deckBodyForce_.valuesPerStep.empty())
-      prescribed["body_force"] = bodyForce_.value;
+    if (!deckBodyForce_.valuesPerStep.empty()) prescribed["body_force"] = bodyForce_.value;
     if (!loadSteps_.obstacleDisplacement.empty())
       prescribed["obstacle"] = loadSteps_.obstacleDisplacementAt(loadStep_, problem_.dimension);
     if (results_->contact && problem_.dimension == 2) {
@@ -727,7 +719,8 @@ void Simulation::output(int cycle, const adapt::Marking& marking, const std::str
       const auto& cs = results_->contact->summary;
       const auto& nu = contact_.obstacleNormal;
       const double centre = cs.center[0] * nu[1] - cs.center[1] * nu[0];
-      c["contact"]["stick_zone_ends"] = {centre - cs.stickZoneEnds[1], centre - cs.stickZoneEnds[0]};
+      c["contact"]["stick_zone_ends"] = {centre - cs.stickZoneEnds[1],
+                                         centre - cs.stickZoneEnds[0]};
     }
   }
   const auto timings = timers_.cycleTimings();
@@ -792,14 +785,16 @@ void Simulation::run()
   // written, so that no file of that run stands beside this one's (docs/output.md). A restart
   // keeps the files of the cycles it continues and removes those of the killed cycle.
   const auto removed =
-      firstCycle == 0 ? io::removeEarlierRunFiles(output_.directory, output_.baseName, *comm_)
-                      : io::removeFilesAfterCycle(output_.directory, output_.baseName, firstCycle - 1, *comm_);
+      firstCycle == 0
+          ? io::removeEarlierRunFiles(output_.directory, output_.baseName, *comm_)
+          : io::removeFilesAfterCycle(output_.directory, output_.baseName, firstCycle - 1, *comm_);
   if (!removed.empty()) {
     std::string names;
     for (std::size_t i = 0; i < removed.size() && i < 6; ++i)
       names += (i ? ", " : "") + removed[i];
-    progress_.message("removed " + std::to_string(removed.size()) + " file(s) of an earlier run from " +
-                      output_.directory + ": " + names + (removed.size() > 6 ? ", ..." : ""));
+    progress_.message("removed " + std::to_string(removed.size()) +
+                      " file(s) of an earlier run from " + output_.directory + ": " + names +
+                      (removed.size() > 6 ? ", ..." : ""));
   }
   summary_ = std::make_unique<io::RunSummary>(comm_, output_.directory, versionString(), *params_);
   summary_->json()["deck"] = deckPath_;
@@ -809,8 +804,7 @@ void Simulation::run()
                                             problem_.dimension, boundaryConditions_.hasContact());
   if (output_.writeXdmf)
     writer_ = std::make_unique<io::XdmfWriter>(comm_, output_.directory, output_.baseName);
-  if (firstCycle > 0)
-    restoreOutputs();
+  if (firstCycle > 0) restoreOutputs();
 
   try {
     std::string stopReason;
@@ -823,8 +817,8 @@ void Simulation::run()
       if (step > 0) {
         applyLoadStep(step);
         std::ostringstream os;
-        os << "load step " << step + 1 << " of " << loadSteps_.numSteps() << ", t = "
-           << loadSteps_.times[step];
+        os << "load step " << step + 1 << " of " << loadSteps_.numSteps()
+           << ", t = " << loadSteps_.times[step];
         progress_.message(os.str());
       }
       if (step > 0 && !continues && contactProblem_)
@@ -832,13 +826,13 @@ void Simulation::run()
       stepFirstCycle_ = continues ? resume_.stepFirstCycle : lastCycle_ + 1;
       adapt::AdaptiveLoop& loop = step == 0 ? *loop_ : *laterStepLoop_;
       if (continues)
-        stopReason = loop.run(*this, firstCycle - stepFirstCycle_, std::move(marked), stepFirstCycle_);
+        stopReason =
+            loop.run(*this, firstCycle - stepFirstCycle_, std::move(marked), stepFirstCycle_);
       else
         stopReason = loop.run(*this, 0, {}, stepFirstCycle_);
       // The next step can start from here: a checkpoint of the step's last cycle (the loop
       // writes none for the cycle it stops at).
-      if (step + 1 < loadSteps_.numSteps())
-        timedCheckpoint(lastCycle_, {}, true);
+      if (step + 1 < loadSteps_.numSteps()) timedCheckpoint(lastCycle_, {}, true);
     }
     // Why the run stopped, and with accuracy targets or a time budget whether the targets were
     // met (docs/adaptivity.md "Accuracy targets and a time budget").
@@ -848,14 +842,15 @@ void Simulation::run()
     if (adaptivity_.hasQuantityTargets() || adaptivity_.timeBudget > 0.0) {
       const bool met = stopReason.rfind("accuracy targets met", 0) == 0;
       const bool budget = stopReason.rfind("time budget", 0) == 0;
-      stop["accuracy_targets_met"] = adaptivity_.hasQuantityTargets() ? nlohmann::ordered_json(met)
-                                                                       : nlohmann::ordered_json(nullptr);
+      stop["accuracy_targets_met"] = adaptivity_.hasQuantityTargets()
+                                         ? nlohmann::ordered_json(met)
+                                         : nlohmann::ordered_json(nullptr);
       stop["time_budget_reached"] = budget;
-      outcome = met ? " (accuracy targets met)"
-                    : budget ? (adaptivity_.hasQuantityTargets()
-                                    ? " (best within the time budget; accuracy targets not met)"
-                                    : " (best within the time budget)")
-                             : (adaptivity_.hasQuantityTargets() ? " (accuracy targets not met)" : "");
+      outcome = met      ? " (accuracy targets met)"
+                : budget ? (adaptivity_.hasQuantityTargets()
+                                ? " (best within the time budget; accuracy targets not met)"
+                                : " (best within the time budget)")
+                         : (adaptivity_.hasQuantityTargets() ? " (accuracy targets not met)" : "");
     }
     // A scene whose contact could not be solved is not "converged".
     summary_->setConverged(solved_);
@@ -864,8 +859,7 @@ void Simulation::run()
   } catch (const core::ConvergenceError& e) {
     // Collective (the active-set decision is global): every rank gets here. The steps before
     // are in summary.json; the failed step is named.
-    if (loadSteps_.given)
-      summary_->json()["failed_load_step"] = loadStep_ + 1;
+    if (loadSteps_.given) summary_->json()["failed_load_step"] = loadStep_ + 1;
     summary_->setError(e.what());
     summary_->write();
     throw;

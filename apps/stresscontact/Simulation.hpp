@@ -54,7 +54,7 @@ class LinearSolver;
 struct MultigridLevel;
 class SolverPolicy;
 class StressHierarchy;
-}
+}  // namespace sc::solvers
 namespace sc::core {
 class ExactSolution;
 }
@@ -206,10 +206,10 @@ private:
 
   Teuchos::RCP<mesh::BisectionRefiner> refiner_;  ///< owns the mesh hierarchy
   mesh::ResourceLimit limit_;  ///< Mesh/Memory limit (GB) or the available memory (rank 0's)
-  Teuchos::RCP<const mesh::SimplexMesh> mesh_;      ///< the current mesh
+  Teuchos::RCP<const mesh::SimplexMesh> mesh_;  ///< the current mesh
   std::vector<int> elementOwner_;  ///< METIS partition: owning rank of each element (system_'s)
   std::vector<std::string> phasesMissing_;  ///< phases this build cannot run (none now)
-  std::vector<std::string> warnings_;  ///< warnings of the run (summary.json "warnings")
+  std::vector<std::string> warnings_;       ///< warnings of the run (summary.json "warnings")
   /// The cycle loop with its marker and stop criteria (built in the constructor so that bad
   /// Adaptivity values fail before any work).
   std::unique_ptr<adapt::AdaptiveLoop> loop_;
@@ -218,7 +218,7 @@ private:
   // pipeline the tests and benchmarks share), solver and solution.
   std::unique_ptr<core::ExactSolution> exact_;
   std::unique_ptr<assembly::MixedElasticitySystem> system_;
-  Teuchos::RCP<const disc::MixedElasticitySpace> space_;       ///< system_'s space
+  Teuchos::RCP<const disc::MixedElasticitySpace> space_;           ///< system_'s space
   const assembly::MixedElasticityAssembler* assembler_ = nullptr;  ///< system_'s assembler
   Teuchos::RCP<solvers::LinearSolver> solver_;
   /// Linear Solver/Iterative/Stress block = Multigrid, or Type = Auto on a 3D scene without

@@ -97,10 +97,8 @@ std::string parameterDifferences(const Json& saved, const Json& current)
       note(key, value, it->second);
   }
   for (const auto& [key, value] : b)
-    if (!a.count(key))
-      note(key, "absent", value);
-  if (count > 8)
-    os << "; and " << (count - 8) << " more";
+    if (!a.count(key)) note(key, "absent", value);
+  if (count > 8) os << "; and " << (count - 8) << " more";
   return os.str();
 }
 
@@ -138,7 +136,8 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
     mine.push_back(static_cast<double>(p.index));
     std::vector<int> v(mesh_->faceVertices(p.face), mesh_->faceVertices(p.face) + d);
     std::sort(v.begin(), v.end());
-    for (int x : v) mine.push_back(static_cast<double>(x));
+    for (int x : v)
+      mine.push_back(static_cast<double>(x));
     mine.push_back(p.weight);
     mine.insert(mine.end(), p.centroid.begin(), p.centroid.begin() + d);
     mine.insert(mine.end(), p.history.begin(), p.history.begin() + d);
@@ -174,9 +173,11 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
     cp.setInts("mesh_generations", {s.generations.begin(), s.generations.end()});
     cp.setInts("mesh_codes", {s.codes.begin(), s.codes.end()});
     cp.setInts("mesh_boundary_edges", {s.boundaryEdges.begin(), s.boundaryEdges.end()});
-    cp.setInts("mesh_boundary_edge_parts", {s.boundaryEdgeParts.begin(), s.boundaryEdgeParts.end()});
+    cp.setInts("mesh_boundary_edge_parts",
+               {s.boundaryEdgeParts.begin(), s.boundaryEdgeParts.end()});
     cp.setInts("mesh_boundary_faces", {s.boundaryFaces.begin(), s.boundaryFaces.end()});
-    cp.setInts("mesh_boundary_face_parts", {s.boundaryFaceParts.begin(), s.boundaryFaceParts.end()});
+    cp.setInts("mesh_boundary_face_parts",
+               {s.boundaryFaceParts.begin(), s.boundaryFaceParts.end()});
     cp.setInts("mesh_curved_edges", {s.curvedEdges.begin(), s.curvedEdges.end()});
     cp.setInts("mesh_curved_edge_parts", {s.curvedEdgeParts.begin(), s.curvedEdgeParts.end()});
 
@@ -208,10 +209,11 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     const bool killedInCycleZero =
         !fs::exists(path, ec) &&
         (fs::exists(dir / (output_.baseName + "_c0000.h5"), ec) ||
-         fs::exists(dir / (output_.baseName + ".xdmf"), ec) || fs::exists(dir / "contact_cycle0.csv", ec) ||
-         fs::exists(dir / "summary.json", ec));
+         fs::exists(dir / (output_.baseName + ".xdmf"), ec) ||
+         fs::exists(dir / "contact_cycle0.csv", ec) || fs::exists(dir / "summary.json", ec));
     if (killedInCycleZero) {
-      progress_.message("restart: " + restartDirectory_ + " holds no checkpoint.h5 but files of a run "
+      progress_.message("restart: " + restartDirectory_ +
+                        " holds no checkpoint.h5 but files of a run "
                         "killed in cycle 0, before its first complete cycle: running from cycle 0");
       marked.clear();
       return 0;
@@ -225,20 +227,20 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   };
   auto scalar = [&](const std::string& name) {
     const auto& v = cp.ints(name);
-    if (v.size() != 1)
-      bad("has a dataset '" + name + "' that is not a single number (damaged)");
+    if (v.size() != 1) bad("has a dataset '" + name + "' that is not a single number (damaged)");
     return v[0];
   };
   if (scalar("checkpoint_version") != kCheckpointVersion)
     bad("has 'checkpoint_version' = " + std::to_string(scalar("checkpoint_version")) +
         "; this build reads version " + std::to_string(kCheckpointVersion) +
-        (scalar("checkpoint_version") < 4 ? " (from version 4 on the checkpoint keeps the load step "
-                                            "and the contact points' friction history)"
-                                          : "") +
+        (scalar("checkpoint_version") < 4
+             ? " (from version 4 on the checkpoint keeps the load step "
+               "and the contact points' friction history)"
+             : "") +
         ": restart with the build that wrote it, or run the deck again from the start");
   if (cp.string("code_version") != versionString())
-    bad("was written by StressContact " + cp.string("code_version") + ", this is " + versionString() +
-        ": restart with the version that wrote it, or run the deck again");
+    bad("was written by StressContact " + cp.string("code_version") + ", this is " +
+        versionString() + ": restart with the version that wrote it, or run the deck again");
 
   Json saved;
   try {
@@ -253,8 +255,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
 
   const int cycle = static_cast<int>(scalar("cycle"));
   const int ranksBefore = static_cast<int>(scalar("ranks"));
-  if (cycle < 0)
-    bad("has a negative cycle (damaged)");
+  if (cycle < 0) bad("has a negative cycle (damaged)");
   // The load step of that cycle. The deck's Load steps equal the checkpoint's (the parameters
   // were compared above); the step and its time are checked against them all the same.
   const int step = static_cast<int>(scalar("load_step"));
@@ -263,8 +264,10 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   if (step < 0 || step >= loadSteps_.numSteps())
     bad("is of load step " + std::to_string(step + 1) + ", but 'Load steps/Times' has " +
         std::to_string(loadSteps_.numSteps()) + " step(s)");
-  if (cp.doubles("load_step_time").size() != 1 || cp.doubles("load_step_time")[0] != loadSteps_.times[step])
-    bad("is of load step " + std::to_string(step + 1) + " at another time than 'Load steps/Times' gives it");
+  if (cp.doubles("load_step_time").size() != 1 ||
+      cp.doubles("load_step_time")[0] != loadSteps_.times[step])
+    bad("is of load step " + std::to_string(step + 1) +
+        " at another time than 'Load steps/Times' gives it");
   if (stepFirstCycle < 0 || stepFirstCycle > cycle || (step == 0 && stepFirstCycle != 0) ||
       (stepComplete && step + 1 >= loadSteps_.numSteps()))
     bad("has load step records that do not fit together (damaged)");
@@ -286,8 +289,8 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   // since the run was started could number them otherwise).
   const std::string names = Json(mesh_->boundaryNames()).dump();
   if (cp.string("mesh_boundary_names") != names)
-    bad("has the boundary parts " + cp.string("mesh_boundary_names") + ", the deck's initial mesh " +
-        names + " (was the mesh file changed?)");
+    bad("has the boundary parts " + cp.string("mesh_boundary_names") +
+        ", the deck's initial mesh " + names + " (was the mesh file changed?)");
   refiner_->restore(s, "checkpoint '" + path + "'");
   mesh_ = refiner_->mesh();
   if (hierarchy_) {
@@ -295,7 +298,8 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     hierarchy_ = std::make_unique<solvers::StressHierarchy>(discretization_.degree, comm_);
     hierarchy_->addMesh(mesh_, {});
   }
-  if (mesh_->numElements() != scalar("mesh_elements") || mesh_->numVertices() != scalar("mesh_vertices"))
+  if (mesh_->numElements() != scalar("mesh_elements") ||
+      mesh_->numVertices() != scalar("mesh_vertices"))
     bad("holds a mesh that does not rebuild to its recorded size (damaged)");
 
   marked = narrow<int>(cp.ints("marked_elements"));
@@ -328,8 +332,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     const auto face = faceOf.find(v);
     if (face == faceOf.end())
       bad("has a contact point on a face that its mesh does not have on the boundary (damaged)");
-    if (comm_->getRank() != 0)
-      continue;
+    if (comm_->getRank() != 0) continue;
     contact::ContactPoint p;
     for (int i = 0; i < d; ++i)
       p.x[i] = points[k + i];
@@ -349,8 +352,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
         (*v)[i] = points[at++];
     restored.push_back(p);
   }
-  if (contactProblem_)
-    contactProblem_->restorePoints(std::move(restored));
+  if (contactProblem_) contactProblem_->restorePoints(std::move(restored));
 
   Json cycles, steps;
   try {
@@ -359,8 +361,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   } catch (const std::exception&) {
     bad("has summary or XDMF records that are not valid JSON (damaged)");
   }
-  if (!steps.is_array())
-    bad("has XDMF records that are not a list (damaged)");
+  if (!steps.is_array()) bad("has XDMF records that are not a list (damaged)");
   if (!cycles.is_array() || static_cast<int>(cycles.size()) != cycle + 1 ||
       cycles.back().value("cycle", -1) != cycle)
     bad("does not hold the summary records of cycles 0 to " + std::to_string(cycle) + " (damaged)");
@@ -386,8 +387,8 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   os << "restart from " << path << ": cycle " << cycle << " complete (" << mesh_->numElements()
      << " elements, " << marked.size() << " marked), continuing with cycle " << cycle + 1;
   if (loadSteps_.numSteps() > 1)
-    os << (stepComplete ? ", which starts load step " : " in load step ") << resume_.step + 1 << " of "
-       << loadSteps_.numSteps();
+    os << (stepComplete ? ", which starts load step " : " in load step ") << resume_.step + 1
+       << " of " << loadSteps_.numSteps();
   if (ranksBefore != comm_->getSize())
     os << "; written on " << ranksBefore << " rank(s), now " << comm_->getSize()
        << ": the cycles after it match a run on " << comm_->getSize()
@@ -409,7 +410,8 @@ void Simulation::restoreOutputs()
   if (writer_) {
     std::vector<io::XdmfWriter::Step> steps;
     for (const auto& s : Json::parse(cp.string("xdmf_steps")))
-      steps.push_back({s.at("cycle").get<int>(), s.at("time").get<double>(), s.at("xml").get<std::string>()});
+      steps.push_back(
+          {s.at("cycle").get<int>(), s.at("time").get<double>(), s.at("xml").get<std::string>()});
     writer_->restoreSteps(steps);
   }
   // history.csv holds the restored cycles only (the killed run may have written a row after its
@@ -424,12 +426,10 @@ void Simulation::killIfAsked(int cycle) const
   // Test only (docs/reliability.md): simulates a run killed during a cycle, after the cycle's
   // fields and CSV are written but before its summary record and checkpoint.
   const char* value = std::getenv("SC_KILL_IN_CYCLE");
-  if (!value || std::string(value).empty())
-    return;
+  if (!value || std::string(value).empty()) return;
   char* end = nullptr;
   const long k = std::strtol(value, &end, 10);
-  if (*end != '\0' || k != cycle)
-    return;
+  if (*end != '\0' || k != cycle) return;
   comm_->barrier();
   if (comm_->getRank() == 0)
     std::cerr << "stresscontact: SC_KILL_IN_CYCLE=" << k << ": killing the run in cycle " << cycle

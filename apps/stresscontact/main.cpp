@@ -103,10 +103,11 @@ CommandLine parseCommandLine(int argc, char* argv[])
   }
   // --restart DIR writes on in DIR: it is the output directory.
   if (!cl.restart.empty()) {
-    SC_THROW_IF(!cl.output.empty() && cl.output != cl.restart, sc::core::InputError,
-                "--restart " << cl.restart << " continues the run in '" << cl.restart
-                             << "', but --output gives '" << cl.output
-                             << "': leave --output out (a restarted run writes on in its directory).");
+    SC_THROW_IF(
+        !cl.output.empty() && cl.output != cl.restart, sc::core::InputError,
+        "--restart " << cl.restart << " continues the run in '" << cl.restart
+                     << "', but --output gives '" << cl.output
+                     << "': leave --output out (a restarted run writes on in its directory).");
     cl.output = cl.restart;
   }
   return cl;
@@ -116,8 +117,7 @@ void printFramed(std::ostream& os, const std::string& title, const std::string& 
 {
   const std::string rule(78, '-');
   os << "\n" << rule << "\nstresscontact: " << title;
-  if (rank > 0)
-    os << " (rank " << rank << ")";
+  if (rank > 0) os << " (rank " << rank << ")";
   os << "\n" << rule << "\n" << message << "\n" << rule << std::endl;
 }
 
@@ -132,8 +132,7 @@ constexpr double kErrorAgreementSeconds = 30.0;
 int launcherRank()
 {
   for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID"})
-    if (const char* v = std::getenv(name))
-      return std::atoi(v);
+    if (const char* v = std::getenv(name)) return std::atoi(v);
   return 0;
 }
 
@@ -144,8 +143,7 @@ int main(int argc, char* argv[])
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h" || a == "--version" || a == "--print-parameters") {
-      if (launcherRank() != 0)
-        return 0;
+      if (launcherRank() != 0) return 0;
       if (a == "--version")
         std::cout << "stresscontact " << sc::app::versionString() << std::endl;
       else if (a == "--print-parameters")
@@ -169,24 +167,20 @@ int main(int argc, char* argv[])
   try {
     const CommandLine cl = parseCommandLine(argc, argv);
     if (cl.version) {
-      if (rank == 0)
-        std::cout << "stresscontact " << sc::app::versionString() << std::endl;
+      if (rank == 0) std::cout << "stresscontact " << sc::app::versionString() << std::endl;
       return 0;
     }
     if (cl.printParameters) {
-      if (rank == 0)
-        sc::app::printValidParameters(std::cout);
+      if (rank == 0) sc::app::printValidParameters(std::cout);
       return 0;
     }
     const std::string deck = cl.input.empty() ? sc::app::defaultDeckPath() : cl.input;
     auto params = sc::app::readAndValidateDeck(deck, cl.overrides, cl.output);
     sc::app::Simulation simulation(comm, params, deck, cl.quiet);
-    if (!cl.restart.empty())
-      simulation.restartFrom(cl.restart);
+    if (!cl.restart.empty()) simulation.restartFrom(cl.restart);
     if (cl.check) {
       simulation.checkScene();
-      if (rank == 0)
-        std::cout << "stresscontact: '" << deck << "' is valid." << std::endl;
+      if (rank == 0) std::cout << "stresscontact: '" << deck << "' is valid." << std::endl;
       return 0;
     }
     simulation.run();
@@ -205,8 +199,7 @@ int main(int argc, char* argv[])
   // rank only (the others did not report one in time) aborts the job rather than hang it.
   const int agreed = errors.agree(code, kErrorAgreementSeconds);
   if (agreed != 0) {
-    if (rank == 0)
-      printFramed(std::cerr, title, message, 0);
+    if (rank == 0) printFramed(std::cerr, title, message, 0);
     return agreed;
   }
   printFramed(std::cerr, title, message, rank);

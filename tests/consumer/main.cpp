@@ -33,8 +33,7 @@ int main(int argc, char* argv[])
   const double measure = mesh->measure();
   std::cout << "consumer: half disc with " << mesh->numElements() << " triangles, measure "
             << measure << " (pi/2 = " << M_PI / 2 << ")" << std::endl;
-  if (std::abs(measure - M_PI / 2) > 0.05 * M_PI / 2)
-    return 1;
+  if (std::abs(measure - M_PI / 2) > 0.05 * M_PI / 2) return 1;
   sc::io::RunSummary summary(comm, ".", "consumer", material);
   summary.addCycle(0)["elements"] = mesh->numElements();
   summary.setConverged(true);

@@ -22,9 +22,9 @@ inline std::string writeInput(const std::uint8_t* data, std::size_t size, const 
       std::filesystem::remove(path, ec);
     }
   };
-  static const TempFile file{(std::filesystem::temp_directory_path() /
-                              ("sc_fuzz_" + std::to_string(::getpid()) + suffix))
-                                 .string()};
+  static const TempFile file{
+      (std::filesystem::temp_directory_path() / ("sc_fuzz_" + std::to_string(::getpid()) + suffix))
+          .string()};
   std::ofstream out(file.path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   return file.path;

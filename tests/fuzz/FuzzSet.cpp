@@ -24,8 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       line.push_back(static_cast<char>(data[i]));
     }
   }
-  if (!line.empty())
-    overrides.push_back(line);
+  if (!line.empty()) overrides.push_back(line);
   if (overrides.size() > 16)
     return -1;  // reject: a command line has a few overrides, not thousands
   try {

@@ -26,8 +26,7 @@ int main(int argc, char* argv[])
       std::vector<fs::path> in(fs::directory_iterator(argv[i]), fs::directory_iterator{});
       std::sort(in.begin(), in.end());
       for (const auto& f : in)
-        if (fs::is_regular_file(f))
-          files.push_back(f);
+        if (fs::is_regular_file(f)) files.push_back(f);
     } else {
       files.emplace_back(argv[i]);
     }

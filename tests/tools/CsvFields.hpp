@@ -14,8 +14,7 @@ inline std::vector<std::string> splitCsvLine(const std::string& line)
   std::string cell;
   while (std::getline(ss, cell, ','))
     out.push_back(cell);
-  if (!line.empty() && line.back() == ',')
-    out.emplace_back();
+  if (!line.empty() && line.back() == ',') out.emplace_back();
   return out;
 }
 

@@ -49,8 +49,7 @@ struct Dataset {
 bool readDataset(hid_t file, const std::string& path, Dataset& d)
 {
   const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  if (set < 0)
-    return false;
+  if (set < 0) return false;
   const hid_t space = H5Dget_space(set);
   d.dims.resize(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
   H5Sget_simple_extent_dims(space, d.dims.data(), nullptr);
@@ -58,7 +57,8 @@ bool readDataset(hid_t file, const std::string& path, Dataset& d)
   for (hsize_t x : d.dims)
     n *= x;
   d.values.assign(n, 0.0);
-  const bool ok = n == 0 || H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, d.values.data()) >= 0;
+  const bool ok = n == 0 || H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                    d.values.data()) >= 0;
   H5Sclose(space);
   H5Dclose(set);
   return ok;
@@ -93,7 +93,8 @@ struct Check {
 int main(int argc, char** argv)
 {
   if (argc < 5) {
-    std::fprintf(stderr, "usage: %s DIR CYCLE DEGREE points|bernstein [--base NAME] [--perturb]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s DIR CYCLE DEGREE points|bernstein [--base NAME] [--perturb]\n",
+                 argv[0]);
     return 2;
   }
   const std::string dir = argv[1];
@@ -125,8 +126,7 @@ int main(int argc, char** argv)
   const int dim = col.count("z") ? 3 : 2;
   std::vector<std::vector<std::string>> rows;
   while (std::getline(csv, line))
-    if (!line.empty())
-      rows.push_back(splitCsvLine(line));
+    if (!line.empty()) rows.push_back(splitCsvLine(line));
   const std::size_t n = rows.size();
   auto num = [&](std::size_t r, const std::string& c) { return std::stod(rows[r].at(col.at(c))); };
   std::vector<std::array<double, 3>> x(n);
@@ -136,8 +136,7 @@ int main(int argc, char** argv)
       x[r][c] = num(r, std::string(1, "xyz"[c]));
     sn[r] = num(r, "sigma_n");
     st1[r] = num(r, "sigma_t");
-    if (dim == 3)
-      st2[r] = num(r, "sigma_t2");
+    if (dim == 3) st2[r] = num(r, "sigma_t2");
     wgap[r] = num(r, "weighted_gap");
     wslip[r] = num(r, "weighted_slip");
     const std::string s = rows[r].at(col.at("status"));
@@ -150,7 +149,8 @@ int main(int argc, char** argv)
     return m;
   };
   if (perturb && n > 0) {
-    const auto it = std::max_element(sn.begin(), sn.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    const auto it = std::max_element(sn.begin(), sn.end(),
+                                     [](double a, double b) { return std::abs(a) < std::abs(b); });
     *it *= 1.0 + 1e-11;
     std::printf("perturbed: the largest sigma_n changed by 1e-11 (relative)\n");
   }
@@ -164,8 +164,8 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "cannot open %s\n", h5Path.c_str());
     return 2;
   }
-  const std::vector<std::string> fields{"contact_pressure", "tangential_traction", "gap", "slip",
-                                        "weight", "contact_normal", "status"};
+  const std::vector<std::string> fields{"contact_pressure", "tangential_traction", "gap",   "slip",
+                                        "weight",           "contact_normal",      "status"};
   std::map<std::string, Dataset> f;
   bool read = readDataset(file, "/contact/geometry", f["geometry"]);
   for (const auto& name : fields)
@@ -181,16 +181,16 @@ int main(int argc, char** argv)
     ok = false;
   };
   if (f["geometry"].dims != std::vector<hsize_t>{n, 3})
-    fail("the contact grid has " + std::to_string(f["geometry"].dims.empty() ? 0 : f["geometry"].dims[0]) +
+    fail("the contact grid has " +
+         std::to_string(f["geometry"].dims.empty() ? 0 : f["geometry"].dims[0]) +
          " points, the CSV " + std::to_string(n));
   for (const auto& name : fields) {
-    const bool vector = name == "contact_normal" || (dim == 3 && (name == "tangential_traction" || name == "slip"));
+    const bool vector =
+        name == "contact_normal" || (dim == 3 && (name == "tangential_traction" || name == "slip"));
     const std::vector<hsize_t> want = vector ? std::vector<hsize_t>{n, 3} : std::vector<hsize_t>{n};
-    if (f[name].dims != want)
-      fail("/contact/point/" + name + " has the wrong shape");
+    if (f[name].dims != want) fail("/contact/point/" + name + " has the wrong shape");
   }
-  if (!ok)
-    return 1;
+  if (!ok) return 1;
 
   // Positions and status: exact (%.17g round-trips).
   std::size_t moved = 0, wrongStatus = 0;
@@ -199,8 +199,7 @@ int main(int argc, char** argv)
       moved += f["geometry"].values[3 * r + c] != (c < dim ? x[r][c] : 0.0);
     wrongStatus += f["status"].values[r] != status[r];
   }
-  if (moved)
-    fail(std::to_string(moved) + " coordinates differ from the CSV's");
+  if (moved) fail(std::to_string(moved) + " coordinates differ from the CSV's");
   if (wrongStatus)
     fail(std::to_string(wrongStatus) + " points have another status than in the CSV");
 
@@ -223,8 +222,7 @@ int main(int argc, char** argv)
       std::array<std::array<double, 3>, 3> v{};
       for (std::size_t p = 0; p < m; ++p)
         for (int i = 0; i < dim; ++i)
-          if (alphas[p][i] == k)
-            v[i] = x[f0 + p];
+          if (alphas[p][i] == k) v[i] = x[f0 + p];
       for (std::size_t p = 0; p < m; ++p) {
         std::array<double, 3> lambda{};
         for (int i = 0; i < 3; ++i)
@@ -247,8 +245,9 @@ int main(int argc, char** argv)
     }
   }
 
-  Check pressure{"contact_pressure"}, traction{"tangential_traction"}, normalToN{"tangential_traction . n"},
-      gap{"gap x weight"}, slip{"slip x weight"}, normal{"|contact_normal|"};
+  Check pressure{"contact_pressure"}, traction{"tangential_traction"},
+      normalToN{"tangential_traction . n"}, gap{"gap x weight"}, slip{"slip x weight"},
+      normal{"|contact_normal|"};
   const double scaleN = std::max(maxAbs(sn), 1e-300);
   const double scaleT = std::max(std::max(maxAbs(st1), maxAbs(st2)), scaleN);
   const double scaleGap = maxAbs(wgap), scaleSlip = maxAbs(wslip);
@@ -266,20 +265,18 @@ int main(int argc, char** argv)
     } else {
       const double* t = &f["tangential_traction"].values[3 * r];
       const double* s = &f["slip"].values[3 * r];
-      traction.add(std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) - std::hypot(pt1[r], pt2[r]), scaleT);
+      traction.add(std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) - std::hypot(pt1[r], pt2[r]),
+                   scaleT);
       normalToN.add(t[0] * nv[0] + t[1] * nv[1] + t[2] * nv[2], scaleT);
       slip.add(std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]) * w - wslip[r], scaleSlip);
     }
   }
-  if (badWeights)
-    fail(std::to_string(badWeights) + " points have a weight that is not positive");
+  if (badWeights) fail(std::to_string(badWeights) + " points have a weight that is not positive");
   std::printf("%zu contact points (%dD, %s, k = %d) in %s\n", n, dim,
               bernsteinCoefficients ? "Bernstein coefficients" : "point values", k, h5Path.c_str());
   std::vector<const Check*> checks{&pressure, &traction, &gap, &slip, &normal};
-  if (bernsteinCoefficients)
-    checks.push_back(&faces);
-  if (dim == 3)
-    checks.push_back(&normalToN);
+  if (bernsteinCoefficients) checks.push_back(&faces);
+  if (dim == 3) checks.push_back(&normalToN);
   for (const Check* c : checks)
     ok = c->report() && ok;
 
@@ -290,13 +287,15 @@ int main(int argc, char** argv)
   const std::string xml = xs.str();
   const std::string stepTag = "<Grid Name=\"cycle " + std::to_string(cycle) + "\"";
   const std::size_t begin = xml.find(stepTag);
-  const std::size_t end = begin == std::string::npos ? begin : xml.find("<Grid Name=\"cycle ", begin + 1);
-  const std::string step = begin == std::string::npos ? std::string() : xml.substr(begin, end - begin);
+  const std::size_t end =
+      begin == std::string::npos ? begin : xml.find("<Grid Name=\"cycle ", begin + 1);
+  const std::string step =
+      begin == std::string::npos ? std::string() : xml.substr(begin, end - begin);
   if (step.find("<Grid Name=\"contact\" GridType=\"Uniform\">") == std::string::npos ||
-      step.find("TopologyType=\"Polyvertex\" NumberOfElements=\"" + std::to_string(n) + "\" NodesPerElement=\"1\"") ==
-          std::string::npos)
-    fail(base + ".xdmf does not list the contact grid of " + std::to_string(n) + " points in cycle " +
-         std::to_string(cycle));
+      step.find("TopologyType=\"Polyvertex\" NumberOfElements=\"" + std::to_string(n) +
+                "\" NodesPerElement=\"1\"") == std::string::npos)
+    fail(base + ".xdmf does not list the contact grid of " + std::to_string(n) +
+         " points in cycle " + std::to_string(cycle));
   for (const auto& name : fields)
     if (step.find("<Attribute Name=\"" + name + "\"") == std::string::npos)
       fail(base + ".xdmf lists no field " + name + " in cycle " + std::to_string(cycle));

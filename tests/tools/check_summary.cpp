@@ -48,10 +48,8 @@ const json* resolve(const json& root, const std::string& pointer)
   while (std::getline(ss, part, '/')) {
     if (node->is_array()) {
       long i = std::stol(part);
-      if (i < 0)
-        i += static_cast<long>(node->size());
-      if (i < 0 || i >= static_cast<long>(node->size()))
-        return nullptr;
+      if (i < 0) i += static_cast<long>(node->size());
+      if (i < 0 || i >= static_cast<long>(node->size())) return nullptr;
       node = &(*node)[static_cast<std::size_t>(i)];
     } else if (node->is_object() && node->contains(part)) {
       node = &(*node)[part];
@@ -68,31 +66,32 @@ std::vector<std::pair<double, double>> etaAgainstDofs(const json& root, long fir
   std::vector<std::pair<double, double>> points;
   const json& cycles = root.at("cycles");
   const long n = static_cast<long>(cycles.size());
-  if (first < 0)
-    first += n;
-  if (last < 0)
-    last += n;
+  if (first < 0) first += n;
+  if (last < 0) last += n;
   for (long i = std::max(first, 0L); i <= std::min(last, n - 1); ++i)
     points.emplace_back(std::log(cycles[i].at("dofs").at("total").get<double>()),
                         std::log(cycles[i].at("eta").at("total").get<double>()));
   return points;
 }
 
-bool checkEta(const json& root, const std::string& kind, const std::string& rest, std::ostringstream& msg)
+bool checkEta(const json& root, const std::string& kind, const std::string& rest,
+              std::ostringstream& msg)
 {
   if (kind == "decreasing") {
     const auto p = etaAgainstDofs(root, std::stol(rest), -1);
     bool ok = p.size() >= 2;
     for (std::size_t i = 1; i < p.size(); ++i)
       ok = ok && p[i].second < p[i - 1].second;
-    msg << "eta/total over " << p.size() << " cycles from cycle " << rest << (ok ? " decreases" : " does not decrease");
+    msg << "eta/total over " << p.size() << " cycles from cycle " << rest
+        << (ok ? " decreases" : " does not decrease");
     return ok;
   }
   // rate:FIRST:LAST=MIN:MAX
   const auto eq = rest.find('=');
   const std::string range = rest.substr(0, eq), bounds = rest.substr(eq + 1);
   const auto c1 = range.find(':'), c2 = bounds.find(':');
-  const auto p = etaAgainstDofs(root, std::stol(range.substr(0, c1)), std::stol(range.substr(c1 + 1)));
+  const auto p =
+      etaAgainstDofs(root, std::stol(range.substr(0, c1)), std::stol(range.substr(c1 + 1)));
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   const double n = static_cast<double>(p.size());
   for (const auto& [x, y] : p) {
@@ -112,8 +111,7 @@ bool checkEta(const json& root, const std::string& kind, const std::string& rest
 // round-trip form, so that the file's value and the checked one are the same double).
 std::string text(const json& v, const std::string& np)
 {
-  if (v.is_string())
-    return v.get<std::string>() == "@NP@" ? np : v.get<std::string>();
+  if (v.is_string()) return v.get<std::string>() == "@NP@" ? np : v.get<std::string>();
   return v.dump();
 }
 
@@ -121,8 +119,7 @@ std::string text(const json& v, const std::string& np)
 std::vector<std::string> checksOfFile(const std::string& path, const std::string& np)
 {
   std::ifstream in(path);
-  if (!in)
-    throw std::runtime_error("cannot open '" + path + "'");
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
   const json file = json::parse(in);
   if (!file.is_object() || !file.contains("source") || !file.at("source").is_string() ||
       file.at("source").get<std::string>().empty() || !file.contains("checks") ||
@@ -156,7 +153,8 @@ std::vector<std::string> checksOfFile(const std::string& path, const std::string
 int main(int argc, char* argv[])
 {
   if (argc < 3) {
-    std::cerr << "usage: check_summary FILE CHECK... | check_summary FILE --expected FILE [--np N]\n";
+    std::cerr
+        << "usage: check_summary FILE CHECK... | check_summary FILE --expected FILE [--np N]\n";
     return 2;
   }
   std::vector<std::string> checks(argv + 2, argv + argc);
@@ -230,8 +228,8 @@ int main(int argc, char* argv[])
       } catch (...) {
         want = expected;  // bare string
       }
-      ok = (*node == want) || (node->is_number() && want.is_number() &&
-                               node->get<double>() == want.get<double>());
+      ok = (*node == want) ||
+           (node->is_number() && want.is_number() && node->get<double>() == want.get<double>());
       msg << node->dump() << ", expected " << want.dump();
     } else if (node->is_number()) {
       const double x = node->get<double>(), v = std::stod(expected);

@@ -6,7 +6,8 @@
 // Both must have "converged" equal and the same number of cycles; in every cycle every value
 // (recursively) must agree: the same keys, numbers within |a − b| ≤ R·max(|a|, |b|) (default
 // R = 1e-12) or |a − b| ≤ A (default 0: for quantities at rounding level, such as an estimator
-// part that is zero up to rounding; integers exactly), strings, booleans and nulls equal. Skipped: wall times
+// part that is zero up to rounding; integers exactly), strings, booleans and nulls equal. Skipped:
+// wall times
 // ("timings" and any key containing "seconds"), the peak memory ("memory") and any object key
 // given with --ignore. Prints every difference (pointer, both values,
 // relative difference) and exits 1 if there is one, 2 on a usage or file error.
@@ -48,15 +49,13 @@ struct Comparison {
     if (a.is_number() && b.is_number()) {
       ++numbers;
       if (a.is_number_integer() && b.is_number_integer()) {
-        if (a.get<long long>() != b.get<long long>())
-          report(where, a, b, "integers differ");
+        if (a.get<long long>() != b.get<long long>()) report(where, a, b, "integers differ");
         return;
       }
       const double x = a.get<double>(), y = b.get<double>();
       const double scale = std::max(std::abs(x), std::abs(y));
       const double rel = scale > 0.0 ? std::abs(x - y) / scale : 0.0;
-      if (std::abs(x - y) <= atol)
-        return;
+      if (std::abs(x - y) <= atol) return;
       worst = std::max(worst, rel);
       if (!(rel <= rtol)) {
         std::ostringstream os;
@@ -71,8 +70,7 @@ struct Comparison {
     }
     if (a.is_object()) {
       for (const auto& item : a.items()) {
-        if (skipped(item.key()))
-          continue;
+        if (skipped(item.key())) continue;
         if (!b.contains(item.key()))
           report(where + "/" + item.key(), item.value(), json(), "missing");
         else
@@ -97,8 +95,7 @@ struct Comparison {
 json load(const std::string& path)
 {
   std::ifstream in(path);
-  if (!in)
-    throw std::runtime_error("cannot open '" + path + "'");
+  if (!in) throw std::runtime_error("cannot open '" + path + "'");
   return json::parse(in);
 }
 
@@ -124,16 +121,20 @@ int main(int argc, char* argv[])
         throw std::runtime_error("unexpected argument '" + a + "'");
     }
     if (nfiles != 2)
-      throw std::runtime_error("usage: compare_summaries EXPECTED ACTUAL [--rtol R] [--atol A] [--ignore KEY]...");
+      throw std::runtime_error(
+          "usage: compare_summaries EXPECTED ACTUAL [--rtol R] [--atol A] [--ignore KEY]...");
     const json a = load(files[0]), b = load(files[1]);
-    if (!a.contains("cycles") || !b.contains("cycles") || !a["cycles"].is_array() || !b["cycles"].is_array())
+    if (!a.contains("cycles") || !b.contains("cycles") || !a["cycles"].is_array() ||
+        !b["cycles"].is_array())
       throw std::runtime_error("both files need a 'cycles' array");
     c.compare(a.value("converged", json()), b.value("converged", json()), "/converged");
     c.compare(a["cycles"].size(), b["cycles"].size(), "/cycles (count)");
     c.compare(a["cycles"], b["cycles"], "/cycles");
-    std::cout << a["cycles"].size() << " cycles, " << c.numbers << " numbers compared, largest relative "
+    std::cout << a["cycles"].size() << " cycles, " << c.numbers
+              << " numbers compared, largest relative "
               << "difference " << c.worst << " (tolerance " << c.rtol << "): "
-              << (c.differences ? std::to_string(c.differences) + " difference(s)" : "the same") << "\n";
+              << (c.differences ? std::to_string(c.differences) + " difference(s)" : "the same")
+              << "\n";
     return c.differences ? 1 : 0;
   } catch (const std::exception& e) {
     std::cerr << "compare_summaries: " << e.what() << "\n";

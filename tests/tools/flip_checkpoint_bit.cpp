@@ -1,5 +1,5 @@
-// flip_checkpoint_bit FILE DATASET BYTE BIT: flips bit BIT (0..7) of byte BYTE of the stored data of
-// dataset DATASET in the HDF5 file FILE (contiguous layout, as CheckpointFile writes), in place.
+// flip_checkpoint_bit FILE DATASET BYTE BIT: flips bit BIT (0..7) of byte BYTE of the stored data
+// of dataset DATASET in the HDF5 file FILE (contiguous layout, as CheckpointFile writes), in place.
 // For the checkpoint integrity test (tests/CheckpointIntegrity.cmake).
 #include <hdf5.h>
 
@@ -29,7 +29,8 @@ int main(int argc, char** argv)
     H5Dclose(set);
     H5Fclose(file);
   }
-  if (offset == HADDR_UNDEF || byte < 0 || static_cast<hsize_t>(byte) >= size || bit < 0 || bit > 7) {
+  if (offset == HADDR_UNDEF || byte < 0 || static_cast<hsize_t>(byte) >= size || bit < 0 ||
+      bit > 7) {
     std::fprintf(stderr, "%s: dataset '%s' has %llu bytes; byte %lld bit %d is not among them\n",
                  argv[0], argv[2], static_cast<unsigned long long>(size), byte, bit);
     return 1;

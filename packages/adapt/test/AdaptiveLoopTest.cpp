@@ -43,7 +43,10 @@ struct StepFunction {
   double jump = 1.0;
   double a = 1.0 / 3.0;
 
-  double valueOn(double x, bool rightOfJump) const { return slope * x + (rightOfJump ? jump : 0.0); }
+  double valueOn(double x, bool rightOfJump) const
+  {
+    return slope * x + (rightOfJump ? jump : 0.0);
+  }
 };
 
 /// ∫_p^q g² for g linear with g(p) = u, g(q) = v (exact).
@@ -66,7 +69,7 @@ struct CycleRecord {
 class PiecewiseConstantProblem : public sc::adapt::AdaptiveProblem {
 public:
   PiecewiseConstantProblem(StepFunction f, std::vector<double> vertices)
-    : f_(f), x_(std::move(vertices)), comm_(Teuchos::DefaultComm<int>::getComm())
+      : f_(f), x_(std::move(vertices)), comm_(Teuchos::DefaultComm<int>::getComm())
   {
   }
   /// `n` equal intervals of [0, 1].
@@ -87,8 +90,7 @@ public:
       bisect.at(e) = true;
     std::vector<double> x{x_.front()};
     for (int e = 0; e < numElements(); ++e) {
-      if (bisect[e])
-        x.push_back(0.5 * (x_[e] + x_[e + 1]));
+      if (bisect[e]) x.push_back(0.5 * (x_[e] + x_[e + 1]));
       x.push_back(x_[e + 1]);
     }
     x_ = std::move(x);
@@ -112,8 +114,7 @@ public:
     CycleEstimate est;
     est.dofs = numElements();
     est.numElements = numElements();
-    if (!provideEstimate)
-      return est;
+    if (!provideEstimate) return est;
     double local = 0.0;
     for (int e = comm_->getRank(); e < numElements(); e += comm_->getSize()) {
       est.ownedElements.push_back(e);
@@ -192,8 +193,7 @@ private:
     const auto piece = [&](double p, double q, bool right) {
       return squareIntegral(p, q, f_.valueOn(p, right) - m, f_.valueOn(q, right) - m);
     };
-    if (l < f_.a && f_.a < r)
-      return piece(l, f_.a, false) + piece(f_.a, r, true);
+    if (l < f_.a && f_.a < r) return piece(l, f_.a, false) + piece(f_.a, r, true);
     return piece(l, r, l >= f_.a);
   }
 
@@ -204,8 +204,8 @@ private:
   CycleEstimate last_;
 };
 
-sc::adapt::AdaptivitySettings settings(const std::string& marking, int cycles, long long maxDofs = 1000000,
-                                       double targetError = 0.0)
+sc::adapt::AdaptivitySettings settings(const std::string& marking, int cycles,
+                                       long long maxDofs = 1000000, double targetError = 0.0)
 {
   sc::adapt::AdaptivitySettings s;
   s.cycles = cycles;
@@ -233,9 +233,9 @@ TEUCHOS_UNIT_TEST(AdaptiveLoop, StepsInTheirOrder)
   const std::string reason = loop.run(problem);
   TEST_EQUALITY(reason, "Cycles = 2 reached");
   const std::vector<std::string> expected = {
-      "solve 0",    "estimate 0", "forecast", "output 0",   "checkpoint 0", "refine 1",
-      "solve 1",    "estimate 1", "forecast", "output 1",   "checkpoint 1", "refine 1",
-      "solve 2",    "estimate 2", "output 2 stop"};
+      "solve 0",      "estimate 0", "forecast",   "output 0",   "checkpoint 0",
+      "refine 1",     "solve 1",    "estimate 1", "forecast",   "output 1",
+      "checkpoint 1", "refine 1",   "solve 2",    "estimate 2", "output 2 stop"};
   TEST_COMPARE_ARRAYS(problem.trace, expected);
 }
 
@@ -263,8 +263,7 @@ TEUCHOS_UNIT_TEST(AdaptiveLoop, DorflerRefinesOnlyAtTheJump)
     } else {
       TEST_EQUALITY(h, 0.125);  // untouched initial interval
     }
-    if (x[e] < 1.0 / 3.0 && 1.0 / 3.0 < x[e + 1])
-      TEST_EQUALITY(h, std::ldexp(1.0, -13));
+    if (x[e] < 1.0 / 3.0 && 1.0 / 3.0 < x[e + 1]) TEST_EQUALITY(h, std::ldexp(1.0, -13));
   }
   TEST_EQUALITY(inside, 11);  // [1/4, 3/8] bisected 10 times, once per cycle
 }
@@ -302,7 +301,8 @@ TEUCHOS_UNIT_TEST(AdaptiveLoop, TargetErrorOnALinearFunction)
   sc::adapt::AdaptiveLoop loop(settings("Maximum", 20, 1000000, 0.01), comm());
   const std::string reason = loop.run(problem);
   out << reason << "\n";
-  TEST_ASSERT(reason.rfind("eta = ", 0) == 0 && reason.find("Target error 0.01") != std::string::npos);
+  TEST_ASSERT(reason.rfind("eta = ", 0) == 0 &&
+              reason.find("Target error 0.01") != std::string::npos);
   TEST_EQUALITY(problem.records.rbegin()->first, 6);
   for (const auto& [cycle, r] : problem.records) {
     const double h = std::ldexp(1.0, -cycle);
@@ -368,7 +368,9 @@ TEUCHOS_UNIT_TEST(AdaptiveLoop, AccuracyTargetOnAQuantity)
   sc::adapt::AdaptiveLoop loop(s, comm());
   const std::string reason = loop.run(problem);
   out << reason << "\n";
-  TEST_ASSERT(reason.rfind("accuracy targets met (estimated relative errors): force 8.24e-04 <= 0.001", 0) == 0);
+  TEST_ASSERT(
+      reason.rfind("accuracy targets met (estimated relative errors): force 8.24e-04 <= 0.001",
+                   0) == 0);
   TEST_EQUALITY(problem.records.rbegin()->first, 6);
   const double h2 = std::ldexp(1.0, -12);
   TEST_FLOATING_EQUALITY(problem.history.back().value, 1.0 / 3.0 - h2 / 12.0, 1e-12);
@@ -394,8 +396,9 @@ TEUCHOS_UNIT_TEST(AdaptiveLoop, TimeBudgetStopsBeforeTheNextCycle)
   const std::string reason = loop.run(problem);
   out << reason << "\n";
   TEST_ASSERT(reason.rfind("time budget: the next cycle would end at about ", 0) == 0);
-  TEST_ASSERT(reason.find("beyond Time budget = 1e-12 s; this cycle is the best within the budget") !=
-              std::string::npos);
+  TEST_ASSERT(
+      reason.find("beyond Time budget = 1e-12 s; this cycle is the best within the budget") !=
+      std::string::npos);
   TEST_EQUALITY(problem.records.rbegin()->first, 0);
   TEST_EQUALITY(problem.checkpoints.size(), 0u);
 }

@@ -49,7 +49,8 @@ TEUCHOS_UNIT_TEST(Marker, DorflerSelectsTheFewestLargest)
 {
   // Σ = 10; θ = 0.5: 4 (< 5) then 3 (7 ≥ 5) → elements {0, 2}; θ = 0.75: 4, 3, 2 (9 ≥ 7.5).
   const std::vector<double> eta2 = {4.0, 0.5, 3.0, 2.0, 0.5};
-  TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::DorflerMarker(0.5), eta2), std::vector<int>({0, 2}));
+  TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::DorflerMarker(0.5), eta2),
+                      std::vector<int>({0, 2}));
   TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::DorflerMarker(0.75), eta2),
                       std::vector<int>({0, 2, 3}));
   TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::DorflerMarker(1.0), eta2),
@@ -65,8 +66,10 @@ TEUCHOS_UNIT_TEST(Marker, MaximumAndUniform)
 {
   // η_T ≥ 0.5 max η_T ⇔ η_T² ≥ 0.25 · 4 = 1.
   const std::vector<double> eta2 = {4.0, 0.5, 3.0, 1.0, 0.99};
-  TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::MaximumMarker(0.5), eta2), std::vector<int>({0, 2, 3}));
-  TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::UniformMarker(), eta2), std::vector<int>({0, 1, 2, 3, 4}));
+  TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::MaximumMarker(0.5), eta2),
+                      std::vector<int>({0, 2, 3}));
+  TEST_COMPARE_ARRAYS(markDistributed(sc::adapt::UniformMarker(), eta2),
+                      std::vector<int>({0, 1, 2, 3, 4}));
 }
 
 TEUCHOS_UNIT_TEST(Marker, BadValuesNameTheKeyAndRange)
@@ -75,7 +78,8 @@ TEUCHOS_UNIT_TEST(Marker, BadValuesNameTheKeyAndRange)
   for (double theta : {0.0, -0.1, 1.5}) {
     Teuchos::ParameterList user;
     user.set("Bulk parameter", theta);
-    const std::string msg = messageOf([&] { sc::core::validateParameters(user, *valid, "deck.xml"); });
+    const std::string msg =
+        messageOf([&] { sc::core::validateParameters(user, *valid, "deck.xml"); });
     out << msg << "\n";
     TEST_ASSERT(msg.find("Bulk parameter") != std::string::npos);
     TEST_ASSERT(msg.find("(0, 1]") != std::string::npos);
@@ -85,7 +89,8 @@ TEUCHOS_UNIT_TEST(Marker, BadValuesNameTheKeyAndRange)
   {
     Teuchos::ParameterList user;
     user.set("Target error", -1e-3);
-    const std::string msg = messageOf([&] { sc::core::validateParameters(user, *valid, "deck.xml"); });
+    const std::string msg =
+        messageOf([&] { sc::core::validateParameters(user, *valid, "deck.xml"); });
     out << msg << "\n";
     TEST_ASSERT(msg.find("Target error") != std::string::npos);
   }
@@ -93,7 +98,8 @@ TEUCHOS_UNIT_TEST(Marker, BadValuesNameTheKeyAndRange)
     Teuchos::ParameterList user;
     user.set("Reconstruction degree", std::string("k+2"));
     const std::string msg = messageOf([&] {
-      sc::core::validateParameters(user, *sc::estimator::EstimatorSettings::getValidParameters(), "deck.xml");
+      sc::core::validateParameters(user, *sc::estimator::EstimatorSettings::getValidParameters(),
+                                   "deck.xml");
     });
     out << msg << "\n";
     TEST_ASSERT(msg.find("Reconstruction degree") != std::string::npos);
@@ -109,11 +115,11 @@ TEUCHOS_UNIT_TEST(StopCriteria, CyclesDofsTarget)
   s.targetError = 0.01;
   sc::adapt::StopCriteria stop(s);
   TEST_EQUALITY(stop.reason(0, 100, 1.0, 10.0), "");
-  TEST_INEQUALITY(stop.reason(5, 100, 1.0, 10.0), "");                   // Cycles
-  TEST_INEQUALITY(stop.reason(1, 10000, 1.0, 10.0), "");                 // Max DOFs
-  TEST_INEQUALITY(stop.reason(1, 100, 0.099, 10.0), "");                 // η ≤ 0.01 · 10
+  TEST_INEQUALITY(stop.reason(5, 100, 1.0, 10.0), "");    // Cycles
+  TEST_INEQUALITY(stop.reason(1, 10000, 1.0, 10.0), "");  // Max DOFs
+  TEST_INEQUALITY(stop.reason(1, 100, 0.099, 10.0), "");  // η ≤ 0.01 · 10
   TEST_EQUALITY(stop.reason(1, 100, 0.101, 10.0), "");
-  TEST_EQUALITY(stop.reason(1, 100, -1.0, -1.0), "");                    // no estimate: ignored
+  TEST_EQUALITY(stop.reason(1, 100, -1.0, -1.0), "");  // no estimate: ignored
   s.targetError = -1.0;
   TEST_THROW(sc::adapt::StopCriteria bad(s), sc::core::InputError);
 }
@@ -173,7 +179,8 @@ TEUCHOS_UNIT_TEST(StopCriteria, AccuracyTargetsAndTimeBudget)
       sc::adapt::StopCriteria x(b);
       TEST_ASSERT(false);
     } catch (const sc::core::InputError& e) {
-      TEST_ASSERT(std::string(e.what()).find("'Adaptivity/Target pressure error'") != std::string::npos);
+      TEST_ASSERT(std::string(e.what()).find("'Adaptivity/Target pressure error'") !=
+                  std::string::npos);
     }
   }
   auto b = valid();
@@ -215,15 +222,16 @@ TEUCHOS_UNIT_TEST(Estimator, YoungModulusScalesEveryPartAndKeepsTheMarking)
     s.solver = "KLU2";  // MUMPS' default workspace is too small for this small pivoting case
     s.boundaryConditions = {{"Left", sc::core::BoundaryType::Displacement, {0.0, 0.0}, false},
                             {"Right", sc::core::BoundaryType::Displacement, {0.01, 0.005}, false}};
-    sc::test::solveVerification(s, comm, [&](int, const sc::assembly::MixedElasticityAssembler& A,
-                                             const Tpetra::MultiVector<>& x,
-                                             const sc::assembly::ElasticityData& data) {
-      sc::estimator::ErrorEstimator estimator(A, sc::estimator::EstimatorSettings{true}, comm);
-      estimates.push_back(estimator.estimate(x, data));
-      sc::adapt::DorflerMarker dorfler(0.5);
-      marked.push_back(dorfler.mark(A.space().mesh().numElements(), A.space().ownedElements(),
-                                    estimates.back().indicators, *comm));
-    });
+    sc::test::solveVerification(
+        s, comm,
+        [&](int, const sc::assembly::MixedElasticityAssembler& A, const Tpetra::MultiVector<>& x,
+            const sc::assembly::ElasticityData& data) {
+          sc::estimator::ErrorEstimator estimator(A, sc::estimator::EstimatorSettings{true}, comm);
+          estimates.push_back(estimator.estimate(x, data));
+          sc::adapt::DorflerMarker dorfler(0.5);
+          marked.push_back(dorfler.mark(A.space().mesh().numElements(), A.space().ownedElements(),
+                                        estimates.back().indicators, *comm));
+        });
   }
   for (std::size_t i = 0; i < estimates[0].parts.size(); ++i) {
     out << estimates[0].parts[i].first << ": " << estimates[0].parts[i].second << " -> "
@@ -231,7 +239,8 @@ TEUCHOS_UNIT_TEST(Estimator, YoungModulusScalesEveryPartAndKeepsTheMarking)
     // Parts at round-off (here the u_D oscillation: constant u_D is interpolated exactly) have no
     // scaling to check.
     if (estimates[0].parts[i].second > 1e-12 * std::pow(estimates[0].total(), 2))
-      TEST_FLOATING_EQUALITY(estimates[1].parts[i].second / estimates[0].parts[i].second, 1e6, 1e-8);
+      TEST_FLOATING_EQUALITY(estimates[1].parts[i].second / estimates[0].parts[i].second, 1e6,
+                             1e-8);
   }
   TEST_FLOATING_EQUALITY(estimates[1].total() / estimates[0].total(), 1e3, 1e-8);
   out << marked[0].size() << " of the elements marked\n";

@@ -55,8 +55,8 @@ TEUCHOS_UNIT_TEST(QuantityError, FasterConvergenceIsOverEstimated)
 // β = 0 (a quantity that moves in steps): the largest change over the window, no extrapolation.
 TEUCHOS_UNIT_TEST(QuantityError, StepsWithoutExtrapolation)
 {
-  std::vector<QuantitySample> h = {{100, 0.2, 0.05}, {200, 0.1, 0.06}, {300, 0.08, 0.07},
-                                   {400, 0.06, 0.07}};
+  std::vector<QuantitySample> h = {
+      {100, 0.2, 0.05}, {200, 0.1, 0.06}, {300, 0.08, 0.07}, {400, 0.06, 0.07}};
   // The window (3 earlier cycles) reaches back to 0.05: |0.05 − 0.07|; with window 1, 0.
   TEST_FLOATING_EQUALITY(sc::adapt::estimateQuantityError(h, 0.0, {3, 1.0, 0.0}), 0.02, 1e-12);
   TEST_FLOATING_EQUALITY(sc::adapt::estimateQuantityError(h, 0.0, {3, 2.0, 0.0}), 0.04, 1e-12);
@@ -71,15 +71,16 @@ TEUCHOS_UNIT_TEST(QuantityError, NoneOrFloor)
   TEST_ASSERT(sc::adapt::estimateQuantityError(h) < 0.0);
   h.push_back({200, 0.12, 5.1});
   TEST_ASSERT(sc::adapt::estimateQuantityError(h) < 0.0);
-  h.push_back({300, 0.05, 5.1});  // η 0.1 → 0.05: |5.0 − 5.1|·0.05/0.05 = 0.1, the 0.12 cycle gives 0
+  h.push_back(
+      {300, 0.05, 5.1});  // η 0.1 → 0.05: |5.0 − 5.1|·0.05/0.05 = 0.1, the 0.12 cycle gives 0
   TEST_FLOATING_EQUALITY(sc::adapt::estimateQuantityError(h), 1.5 * 0.1, 1e-12);
   std::vector<QuantitySample> flat = {{100, 0.1, 2.0}, {200, 0.08, 2.0}, {300, 0.06, 2.0}};
   TEST_EQUALITY(sc::adapt::estimateQuantityError(flat), 0.0);
   TEST_EQUALITY(sc::adapt::estimateQuantityError(flat, 0.01), 0.01);
   // Only the window counts: a jump four cycles back is forgotten with window 3.
-  std::vector<QuantitySample> old = {{100, 0.2, 1.0}, {200, 0.1, 2.0}, {300, 0.08, 2.0},
-                                     {400, 0.06, 2.0}, {500, 0.05, 2.0}};
+  std::vector<QuantitySample> old = {
+      {100, 0.2, 1.0}, {200, 0.1, 2.0}, {300, 0.08, 2.0}, {400, 0.06, 2.0}, {500, 0.05, 2.0}};
   TEST_EQUALITY(sc::adapt::estimateQuantityError(old), 0.0);
-  TEST_FLOATING_EQUALITY(sc::adapt::estimateQuantityError(old, 0.0, {4, 1.0}),
-                         1.0 * 0.05 / 0.15, 1e-12);
+  TEST_FLOATING_EQUALITY(sc::adapt::estimateQuantityError(old, 0.0, {4, 1.0}), 1.0 * 0.05 / 0.15,
+                         1e-12);
 }

@@ -2,7 +2,8 @@
 // elasticity system. Prints one line per size and solver; numbers in docs/benchmarks.md.
 //
 //   elasticity_benchmark [--dim=2|3] [--max-dofs=N] [--degree=k] [--solvers=KLU2,MUMPS,Iterative]
-//                        [--mesh-size=h] [--nu=ν] [--min-dofs=N] [--stress-block=MUMPS|Multigrid|...]
+//                        [--mesh-size=h] [--nu=ν] [--min-dofs=N]
+//                        [--stress-block=MUMPS|Multigrid|...]
 //   mpiexec -n 2 elasticity_benchmark --dim=3 --max-dofs=600000 --mesh-size=0.4
 //
 // Sizes: the initial Gmsh mesh of the unit square/cube (element size h, default 0.25 in 2D and
@@ -104,8 +105,7 @@ int main(int argc, char* argv[])
           item += c;
         }
     } else {
-      if (comm->getRank() == 0)
-        std::fprintf(stderr, "unknown option %s\n", a.c_str());
+      if (comm->getRank() == 0) std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 1;
     }
   }
@@ -122,12 +122,14 @@ int main(int argc, char* argv[])
   const int nRanks = comm->getSize();
   if (comm->getRank() == 0) {
     std::string solverList;
-    for (const auto& t : solvers) solverList += (solverList.empty() ? "" : ",") + t;
-    std::printf("# elasticity_benchmark %dD k=%d nu=%g ranks=%d mesh-size=%g max-dofs=%lld solvers=%s "
-                "stress-block=%s\n"
-                "# times: max over ranks [s]; rates: global count / time / ranks; peakMB: RSS "
-                "high-water mark, max and sum over ranks\n",
-                dim, degree, nu, nRanks, meshSize, maxDofs, solverList.c_str(), stressBlock.c_str());
+    for (const auto& t : solvers)
+      solverList += (solverList.empty() ? "" : ",") + t;
+    std::printf(
+        "# elasticity_benchmark %dD k=%d nu=%g ranks=%d mesh-size=%g max-dofs=%lld solvers=%s "
+        "stress-block=%s\n"
+        "# times: max over ranks [s]; rates: global count / time / ranks; peakMB: RSS "
+        "high-water mark, max and sum over ranks\n",
+        dim, degree, nu, nRanks, meshSize, maxDofs, solverList.c_str(), stressBlock.c_str());
     std::printf("# %9s %8s %8s %8s %8s %10s %10s %-9s %8s %8s %8s %9s %8s %8s %6s\n", "dofs",
                 "elements", "setup_s", "number_s", "assem_s", "dofs/s/rk", "elem/s/rk", "solver",
                 "analyse", "factor", "solve", "residual", "peakMB", "sumMB", "iters");
@@ -145,10 +147,8 @@ int main(int argc, char* argv[])
     // each is timed and the graph of a mesh above --max-dofs is never built.
     sc::assembly::MixedElasticitySystem system(m, degree, comm);  // partition, DOF numbering
     const auto& space = system.space();
-    if (space.numGlobalDofs() > maxDofs)
-      break;
-    if (multigrid)
-      hierarchy.addMesh(m, parent);
+    if (space.numGlobalDofs() > maxDofs) break;
+    if (multigrid) hierarchy.addMesh(m, parent);
     if (space.numGlobalDofs() < minDofs || (multigrid && hierarchy.numMeshes() < 2)) {
       parent = refiner->refineUniformly().elementParent;
       continue;
@@ -169,8 +169,7 @@ int main(int argc, char* argv[])
     for (const auto& type : solvers) {
       Teuchos::ParameterList sl;
       sl.set("Type", type);
-      if (type == "Iterative")
-        sl.sublist("Iterative").set("Stress block", stressBlock);
+      if (type == "Iterative") sl.sublist("Iterative").set("Stress block", stressBlock);
       auto solver = sc::solvers::createLinearSolver(sl);
       auto x = assembler.createVector();
       // scaling and (Krylov) block structure, as the application
@@ -193,8 +192,7 @@ int main(int argc, char* argv[])
         continue;
       }
       const auto& st = solver->lastSolveStats();
-      const double analyseS =
-          solver->isIterative() ? opS : maxOverRanks(*comm, st.symbolicSeconds);
+      const double analyseS = solver->isIterative() ? opS : maxOverRanks(*comm, st.symbolicSeconds);
       const double factorS = maxOverRanks(*comm, st.numericSeconds);
       const double solveS = maxOverRanks(*comm, st.solveSeconds);
       const double peakMax = maxOverRanks(*comm, peakMemoryMB());

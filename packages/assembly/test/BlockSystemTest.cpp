@@ -1,6 +1,6 @@
-// The 3×3 block view (σ, u, θ) of the mixed elasticity system (BlockSystem, docs/architecture.md) against
-// the monolithic matrix M it is cut from, at 1, 2 and 4 ranks: 2D (k = 1, 2) and 3D (k = 1) on
-// the unstructured Gmsh meshes of the other assembly tests, with Dirichlet and traction data so
+// The 3×3 block view (σ, u, θ) of the mixed elasticity system (BlockSystem, docs/architecture.md)
+// against the monolithic matrix M it is cut from, at 1, 2 and 4 ranks: 2D (k = 1, 2) and 3D (k = 1)
+// on the unstructured Gmsh meshes of the other assembly tests, with Dirichlet and traction data so
 // that the traction rows eliminated in M are part of the blocks.
 #include <algorithm>
 #include <cmath>
@@ -105,7 +105,8 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
   // element-space dimensions (expectedSizes); blocks against the field maps.
   long long expected[3];
   expectedSizes(S, expected);
-  const long long spaceCounts[3] = {S.numStressDofs(), S.numDisplacementDofs(), S.numRotationDofs()};
+  const long long spaceCounts[3] = {S.numStressDofs(), S.numDisplacementDofs(),
+                                    S.numRotationDofs()};
   long long sum = 0;
   std::size_t localSum = 0;
   for (int f = 0; f < 3; ++f) {
@@ -119,10 +120,11 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
     localSum += map->getNodeNumElements();
     for (int g = 0; g < 3; ++g) {
       auto B = plain.block(f, g);
-      if (B.is_null())
-        continue;
-      TEST_EQUALITY(static_cast<long long>(B->getRangeMap()->getGlobalNumElements()), spaceCounts[f]);
-      TEST_EQUALITY(static_cast<long long>(B->getDomainMap()->getGlobalNumElements()), spaceCounts[g]);
+      if (B.is_null()) continue;
+      TEST_EQUALITY(static_cast<long long>(B->getRangeMap()->getGlobalNumElements()),
+                    spaceCounts[f]);
+      TEST_EQUALITY(static_cast<long long>(B->getDomainMap()->getGlobalNumElements()),
+                    spaceCounts[g]);
       TEST_ASSERT(B->getRowMap()->isSameAs(*map));
     }
   }
@@ -147,8 +149,7 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
     allBlocks = allBlocks && !plain.block(f, g).is_null() && !scaled.block(f, g).is_null();
   }
   TEST_ASSERT(allBlocks);
-  if (!allBlocks)
-    return;  // the checks below read the five blocks
+  if (!allBlocks) return;  // the checks below read the five blocks
   double maxZeroBlock = 0.0;
   long long zeroBlockEntries = 0;
   {
@@ -158,8 +159,7 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
     CrsMatrix::local_inds_host_view_type cols;
     CrsMatrix::values_host_view_type vals;
     for (std::size_t r = 0; r < rowMap.getNodeNumElements(); ++r) {
-      if (layout.fieldOf(rowMap.getGlobalElement(r)) == 0)
-        continue;
+      if (layout.fieldOf(rowMap.getGlobalElement(r)) == 0) continue;
       M.getLocalRowView(r, cols, vals);
       for (std::size_t k = 0; k < cols.extent(0); ++k)
         if (layout.fieldOf(colMap.getGlobalElement(cols(k))) != 0) {
@@ -171,12 +171,14 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
   double maxZeroBlockAll = 0.0;
   long long zeroBlockEntriesAll = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, maxZeroBlock, Teuchos::outArg(maxZeroBlockAll));
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, zeroBlockEntries, Teuchos::outArg(zeroBlockEntriesAll));
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, zeroBlockEntries,
+                     Teuchos::outArg(zeroBlockEntriesAll));
   TEST_EQUALITY(maxZeroBlockAll, 0.0);
   long long blockEntries = 0;
   for (const auto& [f, g] : nonzeroBlocks)
     blockEntries += static_cast<long long>(plain.block(f, g)->getGlobalNumEntries());
-  TEST_EQUALITY(blockEntries + zeroBlockEntriesAll, static_cast<long long>(M.getGlobalNumEntries()));
+  TEST_EQUALITY(blockEntries + zeroBlockEntriesAll,
+                static_cast<long long>(M.getGlobalNumEntries()));
 
   // B1 = (B1ᵀ)ᵀ and B2 = (B2ᵀ)ᵀ to round-off: M is assembled symmetrically (docs/theory.md §"Mixed
   // formulation": the matrix without contact is symmetric), only the order of the cross-rank sums
@@ -192,7 +194,8 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
   // physicalScaling: √(2μ) on σ, 1/√(2μ) on u and θ).
   {
     const double diffA = difference(*scaled.block(0, 0), false, *plain.block(0, 0));
-    out << "  2μ = " << twoMu << ", |A_scaled − A|_F / |A|_F = " << diffA / frobenius(*plain.block(0, 0))
+    out << "  2μ = " << twoMu
+        << ", |A_scaled − A|_F / |A|_F = " << diffA / frobenius(*plain.block(0, 0))
         << " (expected |2μ − 1| = " << std::abs(twoMu - 1.0) << ")\n";
     TEST_FLOATING_EQUALITY(diffA / frobenius(*plain.block(0, 0)), std::abs(twoMu - 1.0), 1e-12);
     for (const auto& [f, g] : couplingBlocks)
@@ -214,8 +217,7 @@ void checkBlockSystem(const AssembledProblem& p, Teuchos::FancyOStream& out, boo
   for (const BlockSystem* bs : {&plain, &scaled}) {
     const bool isScaled = bs == &scaled;
     MultiVector xs(x, Teuchos::Copy);
-    if (isScaled)
-      xs.elementWiseMultiply(1.0, *D, x, 0.0);
+    if (isScaled) xs.elementWiseMultiply(1.0, *D, x, 0.0);
     M.apply(xs, y);
     if (isScaled) {
       MultiVector t(y, Teuchos::Copy);
@@ -256,7 +258,8 @@ TEUCHOS_UNIT_TEST(BlockSystem, RefusesNonZeroZeroBlock)
 {
   auto p = assemble("Unit square", 2, 0.3, 1);
   const auto& S = p.space();
-  const sc::assembly::FieldLayout layout{S.numStressDofs(), S.numDisplacementDofs(), S.numRotationDofs()};
+  const sc::assembly::FieldLayout layout{S.numStressDofs(), S.numDisplacementDofs(),
+                                         S.numRotationDofs()};
   auto M = Teuchos::rcp(new CrsMatrix(*p.assembler().matrix(), Teuchos::Copy));
   TEST_NOTHROW(BlockSystem accepted(M, layout));
   M->resumeFill();
@@ -267,8 +270,7 @@ TEUCHOS_UNIT_TEST(BlockSystem, RefusesNonZeroZeroBlock)
     CrsMatrix::local_inds_host_view_type cols;
     CrsMatrix::values_host_view_type vals;
     for (std::size_t r = 0; r < rowMap.getNodeNumElements() && !changed; ++r) {
-      if (layout.fieldOf(rowMap.getGlobalElement(r)) != 1)
-        continue;
+      if (layout.fieldOf(rowMap.getGlobalElement(r)) != 1) continue;
       M->getLocalRowView(r, cols, vals);
       for (std::size_t k = 0; k < cols.extent(0) && !changed; ++k)
         if (layout.fieldOf(colMap.getGlobalElement(cols(k))) == 1) {

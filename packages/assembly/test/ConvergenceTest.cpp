@@ -28,7 +28,8 @@ using sc::test::VerificationSetup;
 
 namespace {
 
-void report(Teuchos::FancyOStream& out, const VerificationSetup& s, const std::vector<LevelResult>& r)
+void report(Teuchos::FancyOStream& out, const VerificationSetup& s,
+            const std::vector<LevelResult>& r)
 {
   out << "\n" << s.dim << "D k=" << s.degree << " nu=" << std::setprecision(6) << s.nu << "\n";
   out << "  h          dofs      |s-sh|      |div(s-sh)|  |u-uh|      |th-thh|\n";
@@ -120,12 +121,14 @@ std::vector<LevelResult> halfDisc(int k, int geometryOrder, int levels, Teuchos:
   s.boundaryConditions = {{"Top", sc::core::BoundaryType::Displacement, {}, true},
                           {"Arc", sc::core::BoundaryType::Traction, {}, true}};
   const auto r = solveVerification(s, comm);
-  out << "\nhalf disc, geometry order " << geometryOrder << ", Arc traction with the circle's normal";
+  out << "\nhalf disc, geometry order " << geometryOrder
+      << ", Arc traction with the circle's normal";
   report(out, s, r);
   return r;
 }
 
-void halfDiscCurved(int k, Teuchos::FancyOStream& out, bool& success, const std::string& geoFile = "")
+void halfDiscCurved(int k, Teuchos::FancyOStream& out, bool& success,
+                    const std::string& geoFile = "")
 {
   const auto r = halfDisc(k, 2, 3, out, geoFile);
   TEST_COMPARE(fittedRate(r, &ErrorNorms::stress), >=, k + 0.9);
@@ -142,8 +145,14 @@ TEUCHOS_UNIT_TEST(Convergence, HalfDiscCurvedDegree2) { halfDiscCurved(2, out, s
 // midpoints follow the CAD circle (docs/mesh.md "Curved boundaries from files"), so the rates
 // are the scene's: k + 1 (the polygon of the file's mesh would limit k = 2 to about 1.5, as
 // HalfDiscStraightDegree2IsGeometryLimited shows).
-TEUCHOS_UNIT_TEST(Convergence, HalfDiscFromGeoDegree1) { halfDiscCurved(1, out, success, SC_HALF_DISC_GEO); }
-TEUCHOS_UNIT_TEST(Convergence, HalfDiscFromGeoDegree2) { halfDiscCurved(2, out, success, SC_HALF_DISC_GEO); }
+TEUCHOS_UNIT_TEST(Convergence, HalfDiscFromGeoDegree1)
+{
+  halfDiscCurved(1, out, success, SC_HALF_DISC_GEO);
+}
+TEUCHOS_UNIT_TEST(Convergence, HalfDiscFromGeoDegree2)
+{
+  halfDiscCurved(2, out, success, SC_HALF_DISC_GEO);
+}
 // The straight-sided mesh at k = 2: the geometry error limits the stress rate; the curved
 // elements above remove that limit (this test fails if the data stop following the circle).
 TEUCHOS_UNIT_TEST(Convergence, HalfDiscStraightDegree2IsGeometryLimited)
@@ -158,7 +167,8 @@ TEUCHOS_UNIT_TEST(Convergence, HalfDiscStraightDegree2IsGeometryLimited)
 // tangential traction, imposed by Type = Symmetry), Right and Top carry its traction, and the
 // body force −div σ varies over the square. Source of the expected rates: a priori theory,
 // O(h^{k+1}) as for the Dirichlet/Neumann data above.
-void symmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStream& out, bool& success)
+void symmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStream& out,
+                         bool& success)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   VerificationSetup s;
@@ -190,7 +200,7 @@ void symmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStrea
 class RotatedSolution : public sc::core::ExactSolution {
 public:
   RotatedSolution(std::unique_ptr<sc::core::ExactSolution> u, double angle)
-    : u_(std::move(u)), c_(std::cos(angle)), s_(std::sin(angle))
+      : u_(std::move(u)), c_(std::cos(angle)), s_(std::sin(angle))
   {
   }
   int dim() const override { return 2; }
@@ -208,14 +218,20 @@ public:
             s[i * 2 + j] += R[i][a] * s0[a * 2 + b] * R[j][b];
       }
   }
-  void displacement(const double* x, double* u) const override { rotated(x, u, &ExactSolution::displacement); }
+  void displacement(const double* x, double* u) const override
+  {
+    rotated(x, u, &ExactSolution::displacement);
+  }
   void rotation(const double* x, double* t) const override
   {
     double x0[2];
     back(x, x0);
     u_->rotation(x0, t);
   }
-  void bodyForce(const double* x, double* f) const override { rotated(x, f, &ExactSolution::bodyForce); }
+  void bodyForce(const double* x, double* f) const override
+  {
+    rotated(x, f, &ExactSolution::bodyForce);
+  }
 
 private:
   void back(const double* x, double* x0) const
@@ -223,7 +239,8 @@ private:
     x0[0] = c_ * x[0] + s_ * x[1];
     x0[1] = -s_ * x[0] + c_ * x[1];
   }
-  void rotated(const double* x, double* v, void (ExactSolution::*field)(const double*, double*) const) const
+  void rotated(const double* x, double* v,
+               void (ExactSolution::*field)(const double*, double*) const) const
   {
     double x0[2], v0[2];
     back(x, x0);
@@ -235,7 +252,8 @@ private:
   double c_, s_;
 };
 
-void inclinedSymmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStream& out, bool& success)
+void inclinedSymmetryConvergence(int k, int levels, double minRate, Teuchos::FancyOStream& out,
+                                 bool& success)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   VerificationSetup s;
@@ -249,7 +267,8 @@ void inclinedSymmetryConvergence(int k, int levels, double minRate, Teuchos::Fan
   s.nu = 0.5;
   s.solver = "MUMPS";
   s.exactOverride = std::make_shared<RotatedSolution>(
-      sc::core::createExactSolution(s.exact, 2, sc::core::Material{s.E, s.nu}, s.wavenumber), M_PI / 6);
+      sc::core::createExactSolution(s.exact, 2, sc::core::Material{s.E, s.nu}, s.wavenumber),
+      M_PI / 6);
   s.boundaryConditions = {{"Left", sc::core::BoundaryType::Symmetry, {}, false},
                           {"Bottom", sc::core::BoundaryType::Symmetry, {}, false},
                           {"Right", sc::core::BoundaryType::Traction, {}, true},
@@ -262,12 +281,33 @@ void inclinedSymmetryConvergence(int k, int levels, double minRate, Teuchos::Fan
   TEST_COMPARE(fittedRate(r, &ErrorNorms::displacement), >=, minRate);
 }
 
-TEUCHOS_UNIT_TEST(Convergence, SymmetryLinesDegree1) { symmetryConvergence(1, 4, 1.9, out, success); }
-TEUCHOS_UNIT_TEST(Convergence, SymmetryLinesDegree2) { symmetryConvergence(2, 3, 2.9, out, success); }
-TEUCHOS_UNIT_TEST(Convergence, InclinedSymmetryLinesDegree1) { inclinedSymmetryConvergence(1, 3, 1.9, out, success); }
-TEUCHOS_UNIT_TEST(Convergence, InclinedSymmetryLinesDegree2) { inclinedSymmetryConvergence(2, 3, 2.9, out, success); }
+TEUCHOS_UNIT_TEST(Convergence, SymmetryLinesDegree1)
+{
+  symmetryConvergence(1, 4, 1.9, out, success);
+}
+TEUCHOS_UNIT_TEST(Convergence, SymmetryLinesDegree2)
+{
+  symmetryConvergence(2, 3, 2.9, out, success);
+}
+TEUCHOS_UNIT_TEST(Convergence, InclinedSymmetryLinesDegree1)
+{
+  inclinedSymmetryConvergence(1, 3, 1.9, out, success);
+}
+TEUCHOS_UNIT_TEST(Convergence, InclinedSymmetryLinesDegree2)
+{
+  inclinedSymmetryConvergence(2, 3, 2.9, out, success);
+}
 
-TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree1) { convergence(2, 1, 4, 0.25, 1, false, 1.9, out, success); }
-TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree2) { convergence(2, 2, 4, 0.25, 1, false, 2.9, out, success); }
+TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree1)
+{
+  convergence(2, 1, 4, 0.25, 1, false, 1.9, out, success);
+}
+TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree2)
+{
+  convergence(2, 2, 4, 0.25, 1, false, 2.9, out, success);
+}
 // 3D: Gmsh meshes of size 0.5, 0.25, 0.125 rather than uniform bisection (see the header).
-TEUCHOS_UNIT_TEST(Convergence, Manufactured3DDegree1) { convergence(3, 1, 3, 0.5, 0, true, 1.8, out, success); }
+TEUCHOS_UNIT_TEST(Convergence, Manufactured3DDegree1)
+{
+  convergence(3, 1, 3, 0.5, 0, true, 1.8, out, success);
+}

@@ -43,8 +43,8 @@ namespace {
 struct Effective {
   double E, nu;
   explicit Effective(const sc::core::Material& m)
-    : E(m.planeStress ? m.youngModulus : m.youngModulus / (1 - m.poissonRatio * m.poissonRatio)),
-      nu(m.planeStress ? m.poissonRatio : m.poissonRatio / (1 - m.poissonRatio))
+      : E(m.planeStress ? m.youngModulus : m.youngModulus / (1 - m.poissonRatio * m.poissonRatio)),
+        nu(m.planeStress ? m.poissonRatio : m.poissonRatio / (1 - m.poissonRatio))
   {
   }
 };
@@ -56,12 +56,15 @@ public:
 };
 
 // A bar 0 < y < H hanging from its top y = H under the body force f = (0, −γ) (§101 with ν = 0,
-// where the clamped top does not restrain a lateral contraction): σ_yy = γ y, u_y = γ(y² − H²)/(2E),
-// u_x = 0, θ = 0.
+// where the clamped top does not restrain a lateral contraction): σ_yy = γ y, u_y = γ(y² −
+// H²)/(2E), u_x = 0, θ = 0.
 class HangingBar : public Solution2D {
 public:
   HangingBar(double gamma, double E, double H) : g_(gamma), E_(E), H_(H) {}
-  void stress(const double* x, double* s) const override { s[0] = s[1] = s[2] = 0.0, s[3] = g_ * x[1]; }
+  void stress(const double* x, double* s) const override
+  {
+    s[0] = s[1] = s[2] = 0.0, s[3] = g_ * x[1];
+  }
   void displacement(const double* x, double* u) const override
   {
     u[0] = 0.0;
@@ -137,8 +140,7 @@ public:
       os << std::setprecision(17) << v;
       return os.str();
     };
-    if (i == 0)
-      return num(c_ / eff_.E) + "*x*(y - 0.5)";
+    if (i == 0) return num(c_ / eff_.E) + "*x*(y - 0.5)";
     return num(-c_ / (2 * eff_.E)) + "*(x^2 + " + num(eff_.nu) + "*(y - 0.5)^2)";
   }
 
@@ -152,7 +154,7 @@ private:
 class Hydrostatic : public Solution2D {
 public:
   Hydrostatic(double p, const sc::core::Material& m)
-    : p_(p), eps_(-p * (1 - 2 * m.complianceCoefficient(2)) / (2 * m.shearModulus()))
+      : p_(p), eps_(-p * (1 - 2 * m.complianceCoefficient(2)) / (2 * m.shearModulus()))
   {
   }
   double strain() const { return eps_; }
@@ -174,7 +176,8 @@ private:
 class RotatedUniaxial : public sc::core::ExactSolution {
 public:
   RotatedUniaxial(int dim, double T, const sc::core::Material& m, const std::array<double, 9>& Q)
-    : d_(dim), T_(T), E_(dim == 3 ? m.youngModulus : Effective(m).E), nu_(dim == 3 ? m.poissonRatio : Effective(m).nu), Q_(Q)
+      : d_(dim), T_(T), E_(dim == 3 ? m.youngModulus : Effective(m).E),
+        nu_(dim == 3 ? m.poissonRatio : Effective(m).nu), Q_(Q)
   {
   }
   int dim() const override { return d_; }
@@ -223,8 +226,7 @@ std::array<double, 9> rotationMatrix(std::array<double, 3> axis, double angle)
     for (int j = 0; j < 3; ++j) {
       R[i * 3 + j] = (i == j ? c : 0.0) + (1 - c) * axis[i] * axis[j];
       const int k = 3 - i - j;
-      if (i != j)
-        R[i * 3 + j] += ((j - i + 3) % 3 == 1 ? -1.0 : 1.0) * s * axis[k];
+      if (i != j) R[i * 3 + j] += ((j - i + 3) % 3 == 1 ? -1.0 : 1.0) * s * axis[k];
     }
   return R;
 }
@@ -269,17 +271,16 @@ struct MeshSpec {
 };
 
 // Solve with the data; the errors against each of `exact`.
-std::vector<sc::assembly::ErrorNorms> solve(const MeshSpec& spec, int degree,
-                                            const sc::assembly::ElasticityData& data,
-                                            const std::vector<const sc::core::ExactSolution*>& exact)
+std::vector<sc::assembly::ErrorNorms>
+solve(const MeshSpec& spec, int degree, const sc::assembly::ElasticityData& data,
+      const std::vector<const sc::core::ExactSolution*>& exact)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   Teuchos::ParameterList meshList;
   meshList.set("Source", spec.source);
   meshList.set("Initial mesh size", spec.size);
   meshList.set("Uniform refinements", spec.refinements);
-  if (!spec.file.empty())
-    meshList.set("File", spec.file);
+  if (!spec.file.empty()) meshList.set("File", spec.file);
   if (spec.source == "Rectangle") {
     meshList.set("Lower corner", Teuchos::Array<double>(spec.lower.begin(), spec.lower.end()));
     meshList.set("Upper corner", Teuchos::Array<double>(spec.upper.begin(), spec.upper.end()));
@@ -298,11 +299,13 @@ std::vector<sc::assembly::ErrorNorms> solve(const MeshSpec& spec, int degree,
   auto x = system.solve(*solver);
   std::vector<sc::assembly::ErrorNorms> errors;
   for (const auto* e : exact)
-    errors.push_back(sc::assembly::computeErrors(system.assembler(), *x, *e, *comm, &data.material));
+    errors.push_back(
+        sc::assembly::computeErrors(system.assembler(), *x, *e, *comm, &data.material));
   return errors;
 }
 
-sc::assembly::ErrorNorms solve(const MeshSpec& spec, int degree, const sc::assembly::ElasticityData& data,
+sc::assembly::ErrorNorms solve(const MeshSpec& spec, int degree,
+                               const sc::assembly::ElasticityData& data,
                                const sc::core::ExactSolution& exact)
 {
   return solve(spec, degree, data, std::vector<const sc::core::ExactSolution*>{&exact})[0];
@@ -394,7 +397,8 @@ TEUCHOS_UNIT_TEST(Loads, PressureOnSymmetryQuarterPlaneStrainAndStress)
     const UniaxialCompression otherModel(p, sc::core::Material{10.0, 0.3, !planeStress});
     const auto errors = solve(mesh, 1, data, {&exact, &otherModel});
     const auto& e = errors[0];
-    out << (planeStress ? "plane stress" : "plane strain") << ": |s-sh|/|s| = " << e.stress / e.stressNorm
+    out << (planeStress ? "plane stress" : "plane strain")
+        << ": |s-sh|/|s| = " << e.stress / e.stressNorm
         << ", |u-uh|/|u| = " << e.displacement / e.displacementNorm << "\n";
     TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
     TEST_COMPARE(e.displacement, <=, 1e-10 * e.displacementNorm);
@@ -471,7 +475,8 @@ TEUCHOS_UNIT_TEST(Loads, InclinedBoxWithRollers3D)
   sc::assembly::ElasticityData data{material, readConditions(bc, 3)};
   const RotatedUniaxial exact(3, material.youngModulus * delta / 2.0, material, Q);
   const auto e = solve(mesh, 1, data, exact);
-  out << "|s-sh|/|s| = " << e.stress / e.stressNorm << ", |u-uh|/|u| = " << e.displacement / e.displacementNorm << "\n";
+  out << "|s-sh|/|s| = " << e.stress / e.stressNorm
+      << ", |u-uh|/|u| = " << e.displacement / e.displacementNorm << "\n";
   TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
   TEST_COMPARE(e.displacement, <=, 1e-10 * e.displacementNorm);
   TEST_COMPARE(e.rotation, <=, 1e-10 * e.displacementNorm);
@@ -491,13 +496,14 @@ TEUCHOS_UNIT_TEST(Loads, PureBendingByExpressions)
     bc.sublist("Right").set("Type", std::string("Traction"));
     bc.sublist("Right").set("Expression", formulas({"6*(y - 0.5)", "0"}));
     bc.sublist("Bottom").set("Type", std::string("Displacement"));
-    bc.sublist("Bottom").set("Expression",
-                             formulas({exact.displacementFormula(0), exact.displacementFormula(1)}));
+    bc.sublist("Bottom").set(
+        "Expression", formulas({exact.displacementFormula(0), exact.displacementFormula(1)}));
     sc::assembly::ElasticityData data{material, readConditions(bc)};
     MeshSpec mesh;
     mesh.size = 0.3;
     const auto e = solve(mesh, 1, data, exact);
-    out << (planeStress ? "plane stress" : "plane strain") << ": |s-sh|/|s| = " << e.stress / e.stressNorm
+    out << (planeStress ? "plane stress" : "plane strain")
+        << ": |s-sh|/|s| = " << e.stress / e.stressNorm
         << ", |th-thh|/|th| = " << e.rotation / e.rotationNorm << "\n";
     TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
     TEST_COMPARE(e.rotation, <=, 1e-10 * e.rotationNorm);
@@ -528,8 +534,8 @@ TEUCHOS_UNIT_TEST(Loads, HydrostaticHalfDiscUnderPressure)
   sc::assembly::ElasticityData data{material, readConditions(bc)};
   Teuchos::ParameterList circle = bc;
   circle.sublist("Arc").set("Type", std::string("Traction"));
-  circle.sublist("Arc").set("Expression", formulas({"-3*x/sqrt(x^2 + (y - 1)^2)",
-                                                    "-3*(y - 1)/sqrt(x^2 + (y - 1)^2)"}));
+  circle.sublist("Arc").set(
+      "Expression", formulas({"-3*x/sqrt(x^2 + (y - 1)^2)", "-3*(y - 1)/sqrt(x^2 + (y - 1)^2)"}));
   sc::assembly::ElasticityData circleData{material, readConditions(circle)};
   MeshSpec mesh;
   mesh.source = "Half disc";
@@ -565,8 +571,8 @@ TEUCHOS_UNIT_TEST(Loads, ClosedFormSolutionsAreExact)
     const UniaxialCompression compression(4.0, m);
     const PureBending bending(6.0, m);
     const Hydrostatic hydrostatic(3.0, m);
-    const std::vector<std::pair<const sc::core::ExactSolution*, const sc::core::Material*>> cases = {
-        {&bar, &m0}, {&bar2, &m0}, {&compression, &m}, {&bending, &m}, {&hydrostatic, &m}};
+    const std::vector<std::pair<const sc::core::ExactSolution*, const sc::core::Material*>> cases =
+        {{&bar, &m0}, {&bar2, &m0}, {&compression, &m}, {&bending, &m}, {&hydrostatic, &m}};
     for (const auto& [s, mat] : cases) {
       const double h = 1e-5, cd = mat->complianceCoefficient(2), twoMu = 2 * mat->shearModulus();
       for (const auto& x0 : {std::array<double, 2>{0.3, 0.7}, std::array<double, 2>{0.8, 1.6}}) {
@@ -594,8 +600,10 @@ TEUCHOS_UNIT_TEST(Loads, ClosedFormSolutionsAreExact)
         TEST_EQUALITY(sigma[1], sigma[2]);
         for (int i = 0; i < 2; ++i)
           for (int j = 0; j < 2; ++j) {
-            const double A = (sigma[i * 2 + j] - (i == j ? cd * (sigma[0] + sigma[3]) : 0.0)) / twoMu;
-            TEST_COMPARE(std::abs(A - 0.5 * (grad[i * 2 + j] + grad[j * 2 + i])), <=, 1e-7 * scale / twoMu);
+            const double A =
+                (sigma[i * 2 + j] - (i == j ? cd * (sigma[0] + sigma[3]) : 0.0)) / twoMu;
+            TEST_COMPARE(std::abs(A - 0.5 * (grad[i * 2 + j] + grad[j * 2 + i])), <=,
+                         1e-7 * scale / twoMu);
           }
         TEST_COMPARE(std::abs(theta[0] - 0.5 * (grad[1] - grad[2])), <=, 1e-7 * scale / twoMu);
       }
@@ -624,15 +632,17 @@ TEUCHOS_UNIT_TEST(Loads, SymmetryPartsAreChecked)
   arc.sublist("Arc").set("Type", std::string("Symmetry"));
   arc.sublist("Top").set("Type", std::string("Displacement"));
   arc.sublist("Top").set("Value", Teuchos::Array<double>(2, 0.0));
-  TEST_ASSERT(message("Half disc", arc).find("'Boundary Conditions/Arc/Type' = 'Symmetry' needs a "
-                                             "flat part (a straight line, of any orientation), "
-                                             "but 'Arc' is not flat") != std::string::npos);
+  TEST_ASSERT(message("Half disc", arc)
+                  .find("'Boundary Conditions/Arc/Type' = 'Symmetry' needs a "
+                        "flat part (a straight line, of any orientation), "
+                        "but 'Arc' is not flat") != std::string::npos);
   Teuchos::ParameterList one;
   one.sublist("Left").set("Type", std::string("Symmetry"));
   one.sublist("Top").set("Type", std::string("Pressure"));
   one.sublist("Top").set("Value", Teuchos::Array<double>(1, 1.0));
-  TEST_ASSERT(message("Unit square", one).find("leave rigid-body motions free (nothing holds the "
-                                               "body along y)") != std::string::npos);
+  TEST_ASSERT(message("Unit square", one)
+                  .find("leave rigid-body motions free (nothing holds the "
+                        "body along y)") != std::string::npos);
   one.sublist("Bottom").set("Type", std::string("Symmetry"));
   TEST_EQUALITY(message("Unit square", one), "");
   // The inclined square (30°): Left alone leaves the translation along Left, e2 = (−1/2, √3/2);
@@ -663,12 +673,13 @@ TEUCHOS_UNIT_TEST(Loads, SymmetryPartsAreChecked)
   Teuchos::ParameterList parallel = tilted;
   parallel.remove("Bottom");
   parallel.sublist("Right").set("Type", std::string("Symmetry"));
-  TEST_ASSERT(inclined(parallel).find("nothing holds the body along (0.5, -0.866025))") != std::string::npos);
+  TEST_ASSERT(inclined(parallel).find("nothing holds the body along (0.5, -0.866025))") !=
+              std::string::npos);
   // A formula that is not finite on the body, found at a vertex.
   Teuchos::ParameterList bad = one;
   bad.sublist("Top").remove("Value");
   bad.sublist("Top").set("Expression", formulas({"1/(x - 1)"}));
-  TEST_ASSERT(message("Unit square", bad).find("'Boundary Conditions/Top/Expression' entry 1 = "
-                                               "'1/(x - 1)' evaluates to inf at the point (1, 1)") !=
-              std::string::npos);
+  TEST_ASSERT(message("Unit square", bad)
+                  .find("'Boundary Conditions/Top/Expression' entry 1 = "
+                        "'1/(x - 1)' evaluates to inf at the point (1, 1)") != std::string::npos);
 }

@@ -1,5 +1,7 @@
-// Verification of the assembled mixed elasticity system (docs/verification.md), run at 1, 2 and 4 ranks:
-// - patch test (docs/theory.md §"Mixed formulation"): the linear stress field of core::LinearPatchSolution lies in RT_k
+// Verification of the assembled mixed elasticity system (docs/verification.md), run at 1, 2 and 4
+// ranks:
+// - patch test (docs/theory.md §"Mixed formulation"): the linear stress field of
+// core::LinearPatchSolution lies in RT_k
 //   for k ≥ 1, so σ_h = σ, θ_h = θ and div σ_h = div σ up to round-off on the unstructured Gmsh
 //   meshes of the half disc / unit cube (u_h is its L² projection; analytic argument in
 //   docs/verification.md). This is the test that catches orientation and Piola mistakes.
@@ -20,8 +22,9 @@ void patchTest(const VerificationSetup& s, Teuchos::FancyOStream& out, bool& suc
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const auto r = solveVerification(s, comm).back();
-  out << s.source << " k=" << s.degree << " dofs=" << r.dofs << ": |σ−σh|/|σ| = "
-      << r.errors.stress / r.errors.stressNorm << ", |div(σ−σh)| = " << r.errors.stressDiv
+  out << s.source << " k=" << s.degree << " dofs=" << r.dofs
+      << ": |σ−σh|/|σ| = " << r.errors.stress / r.errors.stressNorm
+      << ", |div(σ−σh)| = " << r.errors.stressDiv
       << ", |θ−θh|/|θ| = " << r.errors.rotation / r.errors.rotationNorm << "\n";
   TEST_COMPARE(r.errors.stress, <=, 1e-9 * r.errors.stressNorm);
   TEST_COMPARE(r.errors.stressDiv, <=, 1e-9 * r.errors.stressDivNorm);

@@ -4,9 +4,9 @@
 // functions have no normal trace on the face) in the point's frame must equal the point values,
 // on straight faces, where both are the same polynomial: 3D at k = 1 (Bernstein coefficients on
 // the vertices, which are values there) and k = 2 (control points at the edge midpoints, where
-// coefficients are not values), 2D at k = 1, 2 (point constraints: the coefficients are the values).
-// Also the weights (Σ_p W_p = Σ_F |F|: the constraint bases sum to 1 on a face) and the gaps and
-// slips of the contact conditions (r_N = G on active points, r_T = 0 on stick points).
+// coefficients are not values), 2D at k = 1, 2 (point constraints: the coefficients are the
+// values). Also the weights (Σ_p W_p = Σ_F |F|: the constraint bases sum to 1 on a face) and the
+// gaps and slips of the contact conditions (r_N = G on active points, r_T = 0 on stick points).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -95,8 +95,7 @@ void checkPointValues(const Case& c, Teuchos::FancyOStream& out, bool& success)
     sc::disc::FaceValues fv(space, 2);
     fv.reinit(e, lf);
     const auto nF = fv.normal(0);
-    if (faces.insert(p.face).second)
-      weights[1] += fv.measure();
+    if (faces.insert(p.face).second) weights[1] += fv.measure();
     weights[0] += p.weight;
     sc::disc::ElementValues ev(space, 1);
     ev.reinitAtPoints(e, {p.x[0], p.x[1], p.x[2]});
@@ -113,7 +112,8 @@ void checkPointValues(const Case& c, Teuchos::FancyOStream& out, bool& success)
     };
     local[0] = std::max(local[0], std::abs(dot(t, p.n)));
     local[1] = std::max(local[1], std::abs(v.pressure + dot(t, p.n)));
-    local[2] = std::max({local[2], std::abs(v.sigmaT[0] - dot(t, p.t1)), std::abs(v.sigmaT[1] - dot(t, p.t2))});
+    local[2] = std::max(
+        {local[2], std::abs(v.sigmaT[0] - dot(t, p.t1)), std::abs(v.sigmaT[1] - dot(t, p.t2))});
     // How far the values are from the coefficients (non-zero where that matters: 3D, k = 2).
     local[3] = std::max(local[3], std::abs(v.pressure + p.sigmaN));
     if (p.status != sc::contact::PointStatus::Free) {
@@ -136,8 +136,8 @@ void checkPointValues(const Case& c, Teuchos::FancyOStream& out, bool& success)
   out << d << "D, k = " << c.degree << ": max |σ_N| " << pmax << ", differences from σ_h: pressure "
       << global[1] / pmax << ", σ_T " << global[2] / pmax << " (relative); values − coefficients "
       << global[3] / pmax << "; Σ W " << sums[0] << ", Σ |F| " << sums[1] << "; " << totals[0]
-      << " active, " << totals[1] << " stick points; |gap| on active points, −gap: "
-      << global[4] << ", |slip| on stick points " << global[5] << "\n";
+      << " active, " << totals[1] << " stick points; |gap| on active points, −gap: " << global[4]
+      << ", |slip| on stick points " << global[5] << "\n";
   TEST_COMPARE(totals[0], >, 0);
   TEST_COMPARE(pmax, >, 0.0);
   TEST_COMPARE(global[1], <=, 1e-11 * pmax);

@@ -75,7 +75,8 @@ TEUCHOS_UNIT_TEST(ContactSettings, IndenterGeometry)
   c.set("Obstacle radius", 1.0);
   c.set("Obstacle normal", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -1.0)));
   sc::core::validateParameters(c, *sc::contact::ContactSettings::getValidParameters(), "test");
-  const auto circle = sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, 2), 2);
+  const auto circle =
+      sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, 2), 2);
   const double top[2] = {0.0, 0.0};  // the block's top below the centre: 0.01 inside the circle
   TEST_FLOATING_EQUALITY(circle->height(top), -0.01, 1e-12);
   const double up[2] = {0.0, 1.0};
@@ -101,13 +102,15 @@ TEUCHOS_UNIT_TEST(ContactSettings, IndenterGeometry)
   c.set("Obstacle", std::string("Sphere"));
   c.set("Obstacle center", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 0.0, 0.99)));
   c.set("Obstacle normal", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, 0.0, -1.0)));
-  const auto sphere = sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, 3), 3);
+  const auto sphere =
+      sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, 3), 3);
   const double p3[3] = {0.3, 0.4, 0.0}, z[3] = {0.0, 0.0, 1.0};
   TEST_FLOATING_EQUALITY(sphere->height(p3), std::sqrt(0.25 + 0.99 * 0.99) - 1.0, 1e-12);
   TEST_FLOATING_EQUALITY(sphere->gap(p3, z, 99.0), 0.99 - std::sqrt(0.75), 1e-12);
   c.set("Obstacle", std::string("Cylinder"));
   c.set("Obstacle axis", Teuchos::Array<double>(Teuchos::tuple<double>(2.0, 0.0, 0.0)));
-  const auto cylinder = sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, 3), 3);
+  const auto cylinder =
+      sc::contact::createObstacle(sc::contact::ContactSettings::fromParameters(c, 3), 3);
   const double q[3] = {5.0, 0.3, 0.0};
   TEST_FLOATING_EQUALITY(cylinder->height(q), std::sqrt(0.09 + 0.99 * 0.99) - 1.0, 1e-12);
   TEST_FLOATING_EQUALITY(cylinder->gap(q, z, 99.0), 0.99 - std::sqrt(0.91), 1e-12);
@@ -156,8 +159,10 @@ TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionFlatIsThePlane)
     graph.set("Obstacle height", Teuchos::Array<std::string>(1, "0.25"));
     graph.set("Obstacle normal", dim == 2 ? arr({0.0, 1.0}) : arr({0.0, 0.0, 1.0}));
     const auto p = obstacleOf(plane, dim), g = obstacleOf(graph, dim);
-    const double points[4][3] = {{0.3, 0.7, 1.1}, {-2.0, 0.25, 0.4}, {1.5, 0.2, 0.249}, {0.1, 0.26, -0.3}};
-    const double rays[4][3] = {{0.0, -1.0, -1.0}, {0.6, -0.8, 0.0}, {0.48, 0.6, -0.64}, {0.0, 1.0, 0.0}};
+    const double points[4][3] = {
+        {0.3, 0.7, 1.1}, {-2.0, 0.25, 0.4}, {1.5, 0.2, 0.249}, {0.1, 0.26, -0.3}};
+    const double rays[4][3] = {
+        {0.0, -1.0, -1.0}, {0.6, -0.8, 0.0}, {0.48, 0.6, -0.64}, {0.0, 1.0, 0.0}};
     for (const auto& x : points) {
       TEST_FLOATING_EQUALITY(g->height(x) + 1.0, p->height(x) + 1.0, 1e-15);
       const auto ng = g->contactNormal(x), np = p->contactNormal(x);
@@ -165,8 +170,10 @@ TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionFlatIsThePlane)
         TEST_FLOATING_EQUALITY(ng[i] + 1.0, np[i] + 1.0, 1e-15);
       for (const auto& n : rays) {
         double u[3] = {n[0], n[1], n[2]}, len = 0.0;
-        for (int i = 0; i < dim; ++i) len += u[i] * u[i];
-        for (int i = 0; i < dim; ++i) u[i] /= std::sqrt(len);
+        for (int i = 0; i < dim; ++i)
+          len += u[i] * u[i];
+        for (int i = 0; i < dim; ++i)
+          u[i] /= std::sqrt(len);
         TEST_FLOATING_EQUALITY(g->gap(x, u, 99.0) + 1.0, p->gap(x, u, 99.0) + 1.0, 1e-14);
       }
     }
@@ -186,7 +193,8 @@ TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionArcIsTheIndenter)
   graph.set("Obstacle height", Teuchos::Array<std::string>(1, "0.99 - sqrt(1 - x^2)"));
   graph.set("Obstacle normal", arr({0.0, -1.0}));
   for (auto* list : {&circle, &graph})
-    sc::core::validateParameters(*list, *sc::contact::ContactSettings::getValidParameters(), "test");
+    sc::core::validateParameters(*list, *sc::contact::ContactSettings::getValidParameters(),
+                                 "test");
   for (double shift : {0.0, 0.15}) {
     auto cs = sc::contact::ContactSettings::fromParameters(circle, 2);
     cs.obstacleCenter[0] += shift, cs.obstacleCenter[1] -= shift / 10;
@@ -219,7 +227,8 @@ TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionArcIsTheIndenter)
   sphere.set("Obstacle center", arr({0.5, 0.5, 1.995}));
   sphere.set("Obstacle normal", arr({0.0, 0.0, -1.0}));
   cap.set("Obstacle", std::string("Height function"));
-  cap.set("Obstacle height", Teuchos::Array<std::string>(1, "1.995 - sqrt(1 - (x - 0.5)^2 - (y - 0.5)^2)"));
+  cap.set("Obstacle height",
+          Teuchos::Array<std::string>(1, "1.995 - sqrt(1 - (x - 0.5)^2 - (y - 0.5)^2)"));
   cap.set("Obstacle normal", arr({0.0, 0.0, -1.0}));
   const auto s = obstacleOf(sphere, 3), g = obstacleOf(cap, 3);
   double worst = 0.0;
@@ -259,7 +268,8 @@ TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionBadInput)
   c.set("Obstacle height", Teuchos::Array<std::string>(1, "0.1*y"));
   e = error(c, 2);
   out << e << "\n";
-  TEST_ASSERT(e.find("'Contact/Obstacle height' = '0.1*y' uses y, the height's own coordinate") != std::string::npos);
+  TEST_ASSERT(e.find("'Contact/Obstacle height' = '0.1*y' uses y, the height's own coordinate") !=
+              std::string::npos);
   c.set("Obstacle height", Teuchos::Array<std::string>(1, "0.1*x"));
   c.set("Obstacle normal", arr({0.6, -0.8}));
   e = error(c, 2);
@@ -267,11 +277,15 @@ TEUCHOS_UNIT_TEST(ContactSettings, HeightFunctionBadInput)
   TEST_ASSERT(e.find("'Contact/Obstacle normal' must be {0, 1} or {0, -1}") != std::string::npos);
   c.set("Obstacle", std::string("Plane"));
   e = error(c, 2);
-  TEST_ASSERT(e.find("'Contact/Obstacle height' is given, but 'Contact/Obstacle' = 'Plane'") != std::string::npos);
+  TEST_ASSERT(e.find("'Contact/Obstacle height' is given, but 'Contact/Obstacle' = 'Plane'") !=
+              std::string::npos);
   c.set("Obstacle", std::string("Height function"));
   c.set("Obstacle normal", arr({0.0, -1.0}));
   c.set("Obstacle height", Teuchos::Array<std::string>(1, "0.1*x + (1"));
   e = error(c, 2);
   out << e << "\n";
-  TEST_ASSERT(e.find("Obstacle height' entry 1 = '0.1*x + (1' is not a valid formula: Missing parenthesis") != std::string::npos);
+  TEST_ASSERT(
+      e.find(
+          "Obstacle height' entry 1 = '0.1*x + (1' is not a valid formula: Missing parenthesis") !=
+      std::string::npos);
 }

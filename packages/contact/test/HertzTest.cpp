@@ -67,7 +67,8 @@ HertzResult solveHertz(const HertzCase& h)
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int d = h.dim;
   Teuchos::ParameterList meshList;
-  meshList.set("Source", h.source.empty() ? std::string(d == 2 ? "Half disc" : "Half ball") : h.source);
+  meshList.set("Source",
+               h.source.empty() ? std::string(d == 2 ? "Half disc" : "Half ball") : h.source);
   meshList.set("Initial mesh size", h.meshSize);
   auto refiner = sc::mesh::MeshFactory::build(meshList, d, *comm);
   Teuchos::ParameterList local;
@@ -86,7 +87,8 @@ HertzResult solveHertz(const HertzCase& h)
   sc::assembly::MixedElasticitySystem system(m, h.degree, comm, curved);
   const auto& space = system.space();
   if (comm->getRank() == 0)
-    std::cout << "  [" << m->numElements() << " elements, " << space.numGlobalDofs() << " DOFs]" << std::endl;
+    std::cout << "  [" << m->numElements() << " elements, " << space.numGlobalDofs() << " DOFs]"
+              << std::endl;
   sc::core::BoundaryConditions bcs;
   std::vector<double> uD(d, 0.0);
   uD[d - 1] = -h.displacement;
@@ -134,7 +136,8 @@ double hertzHalfWidth(double P, double E, double nu)
 namespace {
 
 // (x, σ_N) of all active points on all ranks, sorted by x (the zone is a line in 2D).
-std::vector<std::array<double, 2>> gatherActiveProfile(const std::vector<sc::contact::ContactPoint>& local)
+std::vector<std::array<double, 2>>
+gatherActiveProfile(const std::vector<sc::contact::ContactPoint>& local)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   std::vector<double> mine;
@@ -185,8 +188,8 @@ FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::Fancy
   for (std::size_t i = 0; i < profile.size(); ++i) {
     const double x = profile[i][0];
     if (std::abs(x) >= 0.8 * f.a) continue;
-    f.profileError = std::max(f.profileError,
-                              std::abs(-profile[i][1] - f.p0 * std::sqrt(1.0 - x * x / (f.a * f.a))));
+    f.profileError = std::max(
+        f.profileError, std::abs(-profile[i][1] - f.p0 * std::sqrt(1.0 - x * x / (f.a * f.a))));
     if (i > 0 && i + 1 < profile.size()) {
       const auto &l = profile[i - 1], &rr = profile[i + 1];
       const double line = l[1] + (rr[1] - l[1]) * (x - l[0]) / (rr[0] - l[0]);
@@ -195,12 +198,13 @@ FrictionlessHertz2D frictionless2D(HertzCase h, double tolerance, Teuchos::Fancy
   }
 
   out << "k = " << h.degree << ", "
-      << (h.frame == sc::contact::ContactFrame::BodyNormal ? "body" : "obstacle") << " frame, nu = "
-      << std::setprecision(6) << nu << std::setprecision(4) << ": P = " << f.P << ", a = " << r.summary.zoneSize << " (Hertz " << f.a
-      << "), p0 = " << r.summary.maxPressure << " (Hertz " << f.p0 << "), Newton steps "
-      << r.stats.newtonIterations << ", centre " << r.summary.center[0] << ", profile error "
-      << f.profileError / f.p0 * 100 << "% of p0, staircase " << f.zigzag / f.p0 * 100 << "% of p0 ("
-      << profile.size() << " active points)\n";
+      << (h.frame == sc::contact::ContactFrame::BodyNormal ? "body" : "obstacle")
+      << " frame, nu = " << std::setprecision(6) << nu << std::setprecision(4) << ": P = " << f.P
+      << ", a = " << r.summary.zoneSize << " (Hertz " << f.a << "), p0 = " << r.summary.maxPressure
+      << " (Hertz " << f.p0 << "), Newton steps " << r.stats.newtonIterations << ", centre "
+      << r.summary.center[0] << ", profile error " << f.profileError / f.p0 * 100
+      << "% of p0, staircase " << f.zigzag / f.p0 * 100 << "% of p0 (" << profile.size()
+      << " active points)\n";
   TEST_COMPARE(f.profileError, <=, 0.05 * f.p0);
   return f;
 }
@@ -279,7 +283,6 @@ TEUCHOS_UNIT_TEST(Hertz, ObstacleFrameAccuracy2D)
   TEST_COMPARE(f.zigzag, <=, 0.01 * f.p0);
 }
 
-
 // Curved boundary elements (docs/contact.md "Curved contact faces"): the
 // contact points, their normals, scales and weighted gaps on the quadratic faces of the arc,
 // with Bernstein constraints (the gap is not linear along a curved face). Obstacle frame,
@@ -299,8 +302,7 @@ TEUCHOS_UNIT_TEST(Hertz, CurvedFrictionless2D)
     // coefficients of a linear trace are its vertex values), control values at k = 2, which
     // overshoot the trace; the staircase is a point-value measure, asserted at k = 1 (measured
     // 0.10% of p0; the straight faces' body frame: 5.8%).
-    if (k == 1)
-      TEST_COMPARE(f.zigzag, <=, 0.01 * f.p0);
+    if (k == 1) TEST_COMPARE(f.zigzag, <=, 0.01 * f.p0);
   }
 }
 
@@ -322,7 +324,6 @@ TEUCHOS_UNIT_TEST(Hertz, CurvedBodyFrameIsAnInputError)
   TEST_ASSERT(message.find("'Contact/Frame' = 'Body normal'") != std::string::npos);
   TEST_ASSERT(message.find("'Mesh/Geometry order'") != std::string::npos);
 }
-
 
 TEUCHOS_UNIT_TEST(Hertz, Coulomb2D) { coulomb2D(1, out, success); }
 // Curved faces (the default geometry) with Coulomb friction at k = 1; k = 2 in the serial set.
@@ -377,8 +378,9 @@ TEUCHOS_UNIT_TEST(Hertz, CoulombFixedPointMatchesNewton)
   TEST_ASSERT(ra.stats.converged && rb.stats.converged);
   TEST_EQUALITY(ra.stats.fixedPointIterations, 0);
   TEST_COMPARE(rb.stats.fixedPointIterations, >=, 2);
-  out << "Newton steps " << ra.stats.newtonIterations << "; fixed point: " << rb.stats.fixedPointIterations
-      << " outer steps, " << rb.stats.newtonIterations << " linear solves\n";
+  out << "Newton steps " << ra.stats.newtonIterations
+      << "; fixed point: " << rb.stats.fixedPointIterations << " outer steps, "
+      << rb.stats.newtonIterations << " linear solves\n";
   TEST_EQUALITY(ra.summary.numStick, rb.summary.numStick);
   TEST_EQUALITY(ra.summary.numSlip, rb.summary.numSlip);
   const double p0 = ra.summary.maxPressure;
@@ -456,9 +458,9 @@ TEUCHOS_UNIT_TEST(Hertz, FlatPunchScalesLinearly)
   }
 }
 
-// Initial overlap (docs/contact.md "Initial overlap"): a flat punch on the plane y = δ, i.e. overlapping its
-// base by δ, is the same punch on y = 0 pushed δ further: the same tractions at every point
-// (the analytic equivalence of the linearised problem), σ to 1e-8 of the peak.
+// Initial overlap (docs/contact.md "Initial overlap"): a flat punch on the plane y = δ, i.e.
+// overlapping its base by δ, is the same punch on y = 0 pushed δ further: the same tractions at
+// every point (the analytic equivalence of the linearised problem), σ to 1e-8 of the peak.
 TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
 {
   HertzCase raised = flatPunch();
@@ -481,15 +483,15 @@ TEUCHOS_UNIT_TEST(Contact, InitialOverlapEqualsPrescribedDisplacement)
   TEST_COMPARE(worst, <=, 1e-8 * b.summary.maxPressure);
 }
 
-// Nested iteration through the refinement history (docs/adaptivity.md): the contact state of a solved
-// Hertz run with Coulomb friction (free, stick and slip points all occur) is carried to a mesh in
-// which the contact faces on one side of the zone were bisected, by ActiveSetSolver::transferState
-// with the parents of mesh::boundaryFaceParents. Every new point must have the state of the
-// nearest point of its face's parent face (brute force here, over every rank's points): exactly
-// the old point's state on an unrefined face (same position), the parent's nearer point on a
-// refined one. At k = 1 and 2 (several points per face), at 1, 2 and 4 ranks (the partitions of
-// both meshes differ, the states may not). Then the solve on the new mesh needs at most 3 Newton
-// steps; without a history every point starts free.
+// Nested iteration through the refinement history (docs/adaptivity.md): the contact state of a
+// solved Hertz run with Coulomb friction (free, stick and slip points all occur) is carried to a
+// mesh in which the contact faces on one side of the zone were bisected, by
+// ActiveSetSolver::transferState with the parents of mesh::boundaryFaceParents. Every new point
+// must have the state of the nearest point of its face's parent face (brute force here, over every
+// rank's points): exactly the old point's state on an unrefined face (same position), the parent's
+// nearer point on a refined one. At k = 1 and 2 (several points per face), at 1, 2 and 4 ranks (the
+// partitions of both meshes differ, the states may not). Then the solve on the new mesh needs at
+// most 3 Newton steps; without a history every point starts free.
 TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
 {
   using sc::contact::ContactPoint;
@@ -523,17 +525,16 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
     };
     // Solve on mesh m (or only transfer), starting from `previous` through `parents` (null: all
     // free).
-    auto solveOn = [&](Teuchos::RCP<const sc::mesh::SimplexMesh> m, const std::vector<ContactPoint>* previous,
-                       const std::vector<int>* parents, bool solve = true) {
+    auto solveOn = [&](Teuchos::RCP<const sc::mesh::SimplexMesh> m,
+                       const std::vector<ContactPoint>* previous, const std::vector<int>* parents,
+                       bool solve = true) {
       sc::assembly::MixedElasticitySystem system(m, degree, comm);
       system.assemble({material, bcs, nullptr});
       sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, comm);
-      if (previous)
-        contact.transferState(*previous, *parents);
+      if (previous) contact.transferState(*previous, *parents);
       Run r;
       r.initial = contact.points();
-      if (!solve)
-        return r;
+      if (!solve) return r;
       Teuchos::ParameterList solverList;
       solverList.set("Type", std::string("MUMPS"));
       auto solver = sc::solvers::createLinearSolver(solverList);
@@ -579,8 +580,7 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
       for (std::size_t k = 0; k < old.size(); k += 5)
         if (static_cast<int>(old[k]) == parent) {
           const double d2 = std::pow(p.x[0] - old[k + 1], 2) + std::pow(p.x[1] - old[k + 2], 2);
-          if (d2 < best)
-            best = d2, bestK = k;
+          if (d2 < best) best = d2, bestK = k;
         }
       TEST_COMPARE(best, <, 1e299);
       TEST_EQUALITY(static_cast<int>(p.status), static_cast<int>(old[bestK + 3]));
@@ -589,17 +589,17 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
       const int* pv = m0->faceVertices(parent);
       const bool unrefined = std::min(fv[0], fv[1]) == std::min(pv[0], pv[1]) &&
                              std::max(fv[0], fv[1]) == std::max(pv[0], pv[1]);
-      if (unrefined)
-        TEST_COMPARE(best, <, 1e-24);  // the same point
+      if (unrefined) TEST_COMPARE(best, <, 1e-24);  // the same point
       ++checked[unrefined ? 0 : 1];
       ++counts[static_cast<int>(p.status)];
     }
-    long long global[5] = {0, 0, 0, 0, 0}, local5[5] = {counts[0], counts[1], counts[2], checked[0], checked[1]};
+    long long global[5] = {0, 0, 0, 0, 0},
+              local5[5] = {counts[0], counts[1], counts[2], checked[0], checked[1]};
     Teuchos::reduceAll<int, long long>(*comm, Teuchos::REDUCE_SUM, 5, local5, global);
     out << "k = " << degree << ": transferred " << global[0] << " free, " << global[1] << " stick, "
         << global[2] << " slip points (" << global[3] << " on unrefined, " << global[4]
-        << " on refined faces); Newton steps " << r0.stats.newtonIterations << " on the first mesh, "
-        << r1.stats.newtonIterations << " on the refined one\n";
+        << " on refined faces); Newton steps " << r0.stats.newtonIterations
+        << " on the first mesh, " << r1.stats.newtonIterations << " on the refined one\n";
     for (long long g : global)
       TEST_COMPARE(g, >, 0);
     TEST_ASSERT(r1.stats.converged);
@@ -620,7 +620,8 @@ TEUCHOS_UNIT_TEST(Contact, StateTransferThroughRefinementHistory)
 TEUCHOS_UNIT_TEST(Contact, SupportedDegrees)
 {
   for (int k = 1; k <= 4; ++k) {
-    const double w2 = sc::disc::minRelativeFaceDofWeight(2, k), w3 = sc::disc::minRelativeFaceDofWeight(3, k);
+    const double w2 = sc::disc::minRelativeFaceDofWeight(2, k),
+                 w3 = sc::disc::minRelativeFaceDofWeight(3, k);
     out << "k = " << k << ": min relative weight 2D " << w2 << ", 3D " << w3 << "\n";
     TEST_NOTHROW(sc::contact::checkContactDegree(2, k));
     if (k <= 2) {
@@ -638,13 +639,14 @@ TEUCHOS_UNIT_TEST(Contact, SupportedDegrees)
   TEST_NOTHROW(sc::contact::checkCurvedContact(3, 1, obstacle));
   TEST_THROW(sc::contact::checkCurvedContact(2, 3, obstacle), sc::core::InputError);
   TEST_THROW(sc::contact::checkCurvedContact(3, 2, obstacle), sc::core::InputError);
-  TEST_THROW(sc::contact::checkCurvedContact(2, 1, sc::contact::ContactFrame::BodyNormal), sc::core::InputError);
+  TEST_THROW(sc::contact::checkCurvedContact(2, 1, sc::contact::ContactFrame::BodyNormal),
+             sc::core::InputError);
   TEST_COMPARE(sc::disc::minRelativeFaceDofWeight(3, 3), <, 0.0);
 }
 
 // The obstacle's normal must point towards the body; the opposite is an input error (the design
-// notes' (docs/theory.md §"Contact and friction") sign trap: unchecked, it "converges" with nothing in
-// contact and a zero load). A deep overlap too.
+// notes' (docs/theory.md §"Contact and friction") sign trap: unchecked, it "converges" with nothing
+// in contact and a zero load). A deep overlap too.
 TEUCHOS_UNIT_TEST(Contact, ObstacleOnTheWrongSideIsAnInputError)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
@@ -763,9 +765,9 @@ void frictionless3D(const HertzCase& h, const Hertz3DBounds& bounds, Teuchos::Fa
   const double Estar = h.E / (1 - h.nu * h.nu);
   const double a = std::cbrt(3.0 * P / (4.0 * Estar)), p0 = 3.0 * P / (2.0 * M_PI * a * a);
   out << "3D: P = " << P << ", radius from the area " << r.summary.equivalentZoneSize
-      << ", outermost " << r.summary.zoneSize << " (Hertz " << a << "), p0 " << r.summary.maxPressure
-      << " (Hertz " << p0 << "), Newton steps " << r.stats.newtonIterations << ", centre ("
-      << r.summary.center[0] << ", " << r.summary.center[1] << ")\n";
+      << ", outermost " << r.summary.zoneSize << " (Hertz " << a << "), p0 "
+      << r.summary.maxPressure << " (Hertz " << p0 << "), Newton steps " << r.stats.newtonIterations
+      << ", centre (" << r.summary.center[0] << ", " << r.summary.center[1] << ")\n";
   TEST_ASSERT(r.stats.converged);
   TEST_COMPARE(std::hypot(r.summary.force[0], r.summary.force[1]), <=, 1e-3 * P);
   // Symmetry about the axis: the centre of pressure ∫x σ_N / ∫σ_N (the unweighted centroid of
@@ -776,7 +778,8 @@ void frictionless3D(const HertzCase& h, const Hertz3DBounds& bounds, Teuchos::Fa
     local[1] += p.x[1] * p.sigmaN * p.weight;
     local[2] += p.sigmaN * p.weight;
   }
-  Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_SUM, 3, local, global);
+  Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_SUM, 3,
+                                  local, global);
   const double centre = std::hypot(global[0], global[1]) / std::abs(global[2]);
   out << "centre of pressure at " << centre << " from the axis\n";
   TEST_COMPARE(centre, <=, bounds.centre * a);
@@ -794,7 +797,8 @@ void frictionless3D(const HertzCase& h, const Hertz3DBounds& bounds, Teuchos::Fa
     if (p.status != sc::contact::PointStatus::Free)
       rmax = std::max(rmax, std::hypot(p.x[0], p.x[1]));
   double rmaxAll = 0.0;
-  Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_MAX, 1, &rmax, &rmaxAll);
+  Teuchos::reduceAll<int, double>(*Teuchos::DefaultComm<int>::getComm(), Teuchos::REDUCE_MAX, 1,
+                                  &rmax, &rmaxAll);
   out << "outermost active point at " << rmaxAll / a << " a\n";
   TEST_COMPARE(rmaxAll, <=, bounds.outermost * a);
 }
@@ -813,8 +817,8 @@ TEUCHOS_UNIT_TEST(Hertz, CurvedFrictionless3D)
   frictionless3D(h, {}, out, success);
 }
 
-// Degree 2 in 3D (docs/contact.md "Degree"): the same 5% on the 6-sweep mesh (k = 2 has 6 points per face).
-// About 10 minutes (a 3D k = 2 Newton step factorises ~50M nonzeros): label `long`.
+// Degree 2 in 3D (docs/contact.md "Degree"): the same 5% on the 6-sweep mesh (k = 2 has 6 points
+// per face). About 10 minutes (a 3D k = 2 Newton step factorises ~50M nonzeros): label `long`.
 TEUCHOS_UNIT_TEST(Hertz, Degree2Frictionless3D)
 {
   HertzCase h = hertz3DScene();
@@ -904,8 +908,8 @@ TEUCHOS_UNIT_TEST(Hertz, Coulomb3D)
   coulomb3D(h, out, success);
 }
 
-// 3D Coulomb at k = 2 (accepted for contact, docs/contact.md "Degree"): the same checks as k = 1, which
-// hold on any mesh, on the coarse mesh of Degree2Frictionless3DCoarse (41k DOFs; measured
+// 3D Coulomb at k = 2 (accepted for contact, docs/contact.md "Degree"): the same checks as k = 1,
+// which hold on any mesh, on the coarse mesh of Degree2Frictionless3DCoarse (41k DOFs; measured
 // 2026-12-02: 9 Newton steps, 5 stick / 9 slip points, about 50 s; on the 4-sweep mesh of the
 // 0.25 mesh, 209k DOFs: 12 steps, 38 / 88 points, 5 minutes).
 TEUCHOS_UNIT_TEST(Hertz, Degree2Coulomb3D)

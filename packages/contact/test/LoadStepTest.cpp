@@ -70,12 +70,12 @@ struct Scene {
   {
     sc::assembly::MixedElasticitySystem system(refiner->mesh(), degree, comm);
     sc::core::BoundaryConditions bcs;
-    bcs.conditions.push_back({"Top", sc::core::BoundaryType::Displacement, {top[0], top[1]}, false});
+    bcs.conditions.push_back(
+        {"Top", sc::core::BoundaryType::Displacement, {top[0], top[1]}, false});
     bcs.conditions.push_back({"Arc", sc::core::BoundaryType::Contact, {}, false});
     system.assemble({material, bcs, nullptr});
     sc::contact::ActiveSetSolver contact(system.space(), cs, material, {"Arc"}, comm);
-    if (previous)
-      contact.transferState(*previous, *parents);
+    if (previous) contact.transferState(*previous, *parents);
     Result r;
     if (!solve) {
       r.points = contact.points();
@@ -144,8 +144,7 @@ TEUCHOS_UNIT_TEST(LoadSteps, SameLoadAgainHasNoSlipIncrement)
   TEST_COMPARE(maxAbs(diff, *scene.comm), <=, 1e-8 * scale);
   double slip = 0.0, rT = 0.0;
   for (const auto& p : s2.points) {
-    if (p.status == PointStatus::Free)
-      continue;
+    if (p.status == PointStatus::Free) continue;
     const auto r0 = p.previousRT();
     slip = std::max(slip, std::abs(p.rT[0] - r0[0]));
     rT = std::max(rT, std::abs(r0[0]));
@@ -171,7 +170,8 @@ TEUCHOS_UNIT_TEST(LoadSteps, HistoryTransferIsExactForAffineTraces)
   for (int degree : {1, 2}) {
     Scene scene(3);
     auto affine = [](const std::array<double, 3>& x) {
-      return std::array<double, 3>{0.3 + 2.0 * x[0] - 1.5 * x[1], -0.7 + 0.5 * x[0] + 3.0 * x[1], 0.0};
+      return std::array<double, 3>{0.3 + 2.0 * x[0] - 1.5 * x[1], -0.7 + 0.5 * x[0] + 3.0 * x[1],
+                                   0.0};
     };
     auto before = scene.step(degree, {0.0, -0.01}, nullptr, nullptr, false).points;
     for (auto& p : before) {
@@ -194,8 +194,7 @@ TEUCHOS_UNIT_TEST(LoadSteps, HistoryTransferIsExactForAffineTraces)
     double worst = 0.0, size = 0.0;
     long long checked = 0;
     for (const auto& p : after) {
-      if (parents[p.face] < 0)
-        continue;
+      if (parents[p.face] < 0) continue;
       ++checked;
       // New boundary vertices lie on the arc, off the parent's chord: the history is a function
       // of the position along the parent face, i.e. of the projection onto its line.
@@ -248,10 +247,11 @@ TEUCHOS_UNIT_TEST(LoadSteps, CattaneoMindlin)
   const double cOverA = std::sqrt(1.0 - Q / (mu * P));
   const auto& ends = s2.summary.stickZoneEnds;
   out << "step 1: P = " << s1.summary.force[1] << ", stick " << s1.summary.stickZoneSize << " of "
-      << s1.summary.zoneSize << "; step 2: P = " << P << ", Q = " << Q << " (Q/(mu P) = " << Q / (mu * P)
-      << "), a = " << s2.summary.zoneSize << " (Hertz " << a << "), stick zone [" << ends[0] << ", "
-      << ends[1] << "], c/a = " << s2.summary.stickZoneSize / s2.summary.zoneSize << " (Johnson "
-      << cOverA << "), Newton steps " << s1.stats.newtonIterations << ", " << s2.stats.newtonIterations
+      << s1.summary.zoneSize << "; step 2: P = " << P << ", Q = " << Q
+      << " (Q/(mu P) = " << Q / (mu * P) << "), a = " << s2.summary.zoneSize << " (Hertz " << a
+      << "), stick zone [" << ends[0] << ", " << ends[1]
+      << "], c/a = " << s2.summary.stickZoneSize / s2.summary.zoneSize << " (Johnson " << cOverA
+      << "), Newton steps " << s1.stats.newtonIterations << ", " << s2.stats.newtonIterations
       << "\n";
   TEST_COMPARE(std::abs(Q / (mu * P) - 0.5), <=, 0.1);  // the deck's intent: Q ≈ μ_F P / 2
   TEST_COMPARE(std::abs(P / s1.summary.force[1] - 1.0), <=, 1e-3);  // decoupled: P unchanged
@@ -276,12 +276,13 @@ TEUCHOS_UNIT_TEST(LoadSteps, CattaneoMindlin)
   int pairs = 0;
   for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
     const double x = all[i];
-    if (x <= 0.0 || x >= 0.7 * c)
-      continue;
+    if (x <= 0.0 || x >= 0.7 * c) continue;
     for (std::size_t j = 0; j + 1 < all.size(); j += 2)
       if (std::abs(all[j] + x) <= 1e-9) {
         const double even = 0.5 * sign * (all[i + 1] + all[j + 1]);
-        const double q = mu * p0 * (std::sqrt(1.0 - x * x / (a * a)) - (c / a) * std::sqrt(1.0 - x * x / (c * c)));
+        const double q =
+            mu * p0 *
+            (std::sqrt(1.0 - x * x / (a * a)) - (c / a) * std::sqrt(1.0 - x * x / (c * c)));
         worst = std::max(worst, std::abs(even - q));
         ++pairs;
         out << "  x/c = " << x / c << ": even part " << even / (mu * p0) << " mu p0, Mindlin "

@@ -106,7 +106,8 @@ TEUCHOS_UNIT_TEST(Expression, ValidatorCompilesAndCounts)
   TEST_ASSERT(check(Teuchos::tuple<std::string>("min(x", "y)", "0", "1"))
                   .find("'Body Force/Expression' = {min(x, y), 0, 1} has 4 formulas; it must have "
                         "0 or 2 or 3 (a formula cannot contain a comma") != std::string::npos);
-  TEST_ASSERT(check(Teuchos::tuple<std::string>("0", "y^"))
-                  .find("deck.xml: 'Body Force/Expression' entry 2 = 'y^' is not a valid formula") !=
-              std::string::npos);
+  TEST_ASSERT(
+      check(Teuchos::tuple<std::string>("0", "y^"))
+          .find("deck.xml: 'Body Force/Expression' entry 2 = 'y^' is not a valid formula") !=
+      std::string::npos);
 }

@@ -30,8 +30,7 @@ sc::core::LoadSteps steps(const Teuchos::Array<double>& times,
 {
   ParameterList pl;
   pl.set("Times", times);
-  if (!obstacle.empty())
-    pl.set("Obstacle displacement", obstacle);
+  if (!obstacle.empty()) pl.set("Obstacle displacement", obstacle);
   sc::core::validateParameters(pl, *sc::core::LoadSteps::getValidParameters(), "test");
   return sc::core::LoadSteps::fromParameters(pl, dim);
 }
@@ -50,12 +49,14 @@ TEUCHOS_UNIT_TEST(LoadSteps, DefaultIsOneStepAtTimeOne)
 
 TEUCHOS_UNIT_TEST(LoadSteps, TimesMustIncrease)
 {
-  const auto s = steps(Teuchos::tuple<double>(0.5, 1.0, 2.0), Teuchos::tuple<double>(0, 0, 0, -0.1, 0.2, -0.1));
+  const auto s = steps(Teuchos::tuple<double>(0.5, 1.0, 2.0),
+                       Teuchos::tuple<double>(0, 0, 0, -0.1, 0.2, -0.1));
   TEST_EQUALITY(s.numSteps(), 3);
   TEST_EQUALITY(s.obstacleDisplacementAt(2, 2)[0], 0.2);
   std::string m = inputError([] { steps(Teuchos::tuple<double>(1.0, 1.0)); });
   out << m << "\n";
-  TEST_ASSERT(m.find("'Load steps/Times' entry 2 (1) does not follow entry 1 (1)") != std::string::npos);
+  TEST_ASSERT(m.find("'Load steps/Times' entry 2 (1) does not follow entry 1 (1)") !=
+              std::string::npos);
   m = inputError([] { steps(Teuchos::tuple<double>(0.0, 1.0)); });
   TEST_ASSERT(m.find("must be positive") != std::string::npos);
   m = inputError([] { steps(Teuchos::tuple<double>(1.0, 2.0), Teuchos::tuple<double>(0, 0, 0)); });
@@ -67,9 +68,11 @@ TEUCHOS_UNIT_TEST(LoadSteps, BoundaryAndBodyForceTables)
 {
   ParameterList bc;
   bc.sublist("Top").set("Type", std::string("Displacement"));
-  bc.sublist("Top").set("Values per step", Teuchos::Array<double>(Teuchos::tuple<double>(0, -0.01, 0.004, -0.01)));
+  bc.sublist("Top").set("Values per step",
+                        Teuchos::Array<double>(Teuchos::tuple<double>(0, -0.01, 0.004, -0.01)));
   bc.sublist("Side").set("Type", std::string("Pressure"));
-  bc.sublist("Side").set("Values per step", Teuchos::Array<double>(Teuchos::tuple<double>(1.0, 3.0)));
+  bc.sublist("Side").set("Values per step",
+                         Teuchos::Array<double>(Teuchos::tuple<double>(1.0, 3.0)));
   sc::core::validateParameters(bc, *sc::core::BoundaryConditions::getValidParameters(), "test");
   const auto bcs = sc::core::BoundaryConditions::fromParameters(bc, 2);
   bcs.checkStepTables(2, 2);
@@ -86,10 +89,12 @@ TEUCHOS_UNIT_TEST(LoadSteps, BoundaryAndBodyForceTables)
   ParameterList both = bc;
   both.sublist("Top").set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(0, 0)));
   m = inputError([&] { sc::core::BoundaryConditions::fromParameters(both, 2); });
-  TEST_ASSERT(m.find("'Boundary Conditions/Top/Values per step' and 'Boundary Conditions/Top/Value' "
-                     "are both given") != std::string::npos);
+  TEST_ASSERT(
+      m.find("'Boundary Conditions/Top/Values per step' and 'Boundary Conditions/Top/Value' "
+             "are both given") != std::string::npos);
   ParameterList odd = bc;
-  odd.sublist("Top").set("Values per step", Teuchos::Array<double>(Teuchos::tuple<double>(0, -0.01, 0.004)));
+  odd.sublist("Top").set("Values per step",
+                         Teuchos::Array<double>(Teuchos::tuple<double>(0, -0.01, 0.004)));
   m = inputError([&] { sc::core::BoundaryConditions::fromParameters(odd, 2); });
   TEST_ASSERT(m.find("not a whole number of rows of 2") != std::string::npos);
 
@@ -106,8 +111,9 @@ TEUCHOS_UNIT_TEST(LoadSteps, BoundaryAndBodyForceTables)
   force.atStep(1, 2).evaluate(x, 2, value);
   TEST_EQUALITY(value[1], -2.0);
   m = inputError([&] { force.checkStepTable(1, 2); });
-  TEST_ASSERT(m.find("'Body Force/Values per step' has 2 rows of 2, but 'Load steps/Times' has 1") !=
-              std::string::npos);
+  TEST_ASSERT(
+      m.find("'Body Force/Values per step' has 2 rows of 2, but 'Load steps/Times' has 1") !=
+      std::string::npos);
 }
 
 // Formulas see the step's time t (analytic values).

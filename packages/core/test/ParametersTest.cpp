@@ -118,7 +118,9 @@ TEUCHOS_UNIT_TEST(Parameters, TemplateSublistsAreCheckedAndFilled)
 {
   ParameterList user;
   user.sublist("Boundary Conditions").sublist("Top").set("Type", std::string("Displacement"));
-  user.sublist("Boundary Conditions").sublist("Top").set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -0.01)));
+  user.sublist("Boundary Conditions")
+      .sublist("Top")
+      .set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -0.01)));
   user.sublist("Boundary Conditions").sublist("Arc");
   sc::core::validateParameters(user, validList(), "deck.xml");
   TEST_EQUALITY(user.sublist("Boundary Conditions").sublist("Arc").get<std::string>("Type"),
@@ -129,7 +131,9 @@ TEUCHOS_UNIT_TEST(Parameters, TemplateSublistsAreCheckedAndFilled)
   TEST_ASSERT(contains(errorOf(bad), "unknown key 'Boundary Conditions/Top/Typ'"));
 
   ParameterList badLength;
-  badLength.sublist("Boundary Conditions").sublist("Top").set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(1.0)));
+  badLength.sublist("Boundary Conditions")
+      .sublist("Top")
+      .set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(1.0)));
   TEST_ASSERT(contains(errorOf(badLength), "has 1 entries; it must have 0 or 2 or 3"));
 }
 
@@ -153,7 +157,9 @@ TEUCHOS_UNIT_TEST(Parameters, Overrides)
   // Formulas (Array(string)) as the XML reader reads them: split at commas, in braces.
   sc::core::applyOverride(user, valid, "Boundary Conditions/Top/Expression={0, -0.01*(1 + x^2)}");
   sc::core::validateParameters(user, valid, "--set");
-  const auto formulas = user.sublist("Boundary Conditions").sublist("Top").get<Teuchos::Array<std::string>>("Expression");
+  const auto formulas = user.sublist("Boundary Conditions")
+                            .sublist("Top")
+                            .get<Teuchos::Array<std::string>>("Expression");
   TEST_EQUALITY(formulas.size(), 2);
   TEST_EQUALITY(formulas[0], "0");
   TEST_EQUALITY(formulas[1], "-0.01*(1 + x^2)");
@@ -189,9 +195,10 @@ TEUCHOS_UNIT_TEST(Parameters, MissingAndMalformedFiles)
 // of an enclosing tag"); a UTF-16 deck is refused by name.
 TEUCHOS_UNIT_TEST(Parameters, ByteOrderMarks)
 {
-  const std::string body = "<ParameterList name=\"StressContact\">\n  <ParameterList name=\"Material\">\n"
-                           "    <Parameter name=\"Poisson ratio\" type=\"double\" value=\"0.3\"/>\n"
-                           "  </ParameterList>\n</ParameterList>\n";
+  const std::string body =
+      "<ParameterList name=\"StressContact\">\n  <ParameterList name=\"Material\">\n"
+      "    <Parameter name=\"Poisson ratio\" type=\"double\" value=\"0.3\"/>\n"
+      "  </ParameterList>\n</ParameterList>\n";
   const std::string path = "core_unit_tests_bom.xml";
   std::ofstream(path, std::ios::binary) << "\xEF\xBB\xBF" << body;
   const auto list = sc::core::readParameterFile(path);
@@ -215,8 +222,8 @@ std::string deckError(const std::string& body)
   const std::string path = "core_unit_tests_strict.xml";
   {
     std::ofstream f(path);
-    f << "<ParameterList name=\"StressContact\">\n  <ParameterList name=\"Material\">\n" << body
-      << "\n  </ParameterList>\n</ParameterList>\n";
+    f << "<ParameterList name=\"StressContact\">\n  <ParameterList name=\"Material\">\n"
+      << body << "\n  </ParameterList>\n</ParameterList>\n";
   }
   std::string error;
   try {
@@ -242,12 +249,16 @@ TEUCHOS_UNIT_TEST(Parameters, XmlNumbersAreParsedStrictly)
   out << e1 << "\n";
   TEST_ASSERT(contains(e1, "'Material/Poisson ratio' = 'abc' is not a double (not a number)"));
   TEST_ASSERT(contains(e1, "core_unit_tests_strict.xml"));
-  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "20,600")),
-                       "'Material/Young modulus' = '20,600' is not a double (trailing characters ',600')"));
-  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "20600abc")), "trailing characters 'abc'"));
-  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "")), "is not a double (empty value)"));
+  TEST_ASSERT(
+      contains(deckError(param("Young modulus", "double", "20,600")),
+               "'Material/Young modulus' = '20,600' is not a double (trailing characters ',600')"));
+  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "20600abc")),
+                       "trailing characters 'abc'"));
+  TEST_ASSERT(
+      contains(deckError(param("Young modulus", "double", "")), "is not a double (empty value)"));
   TEST_ASSERT(contains(deckError(param("Young modulus", "double", "nan")), "not a finite number"));
-  TEST_ASSERT(contains(deckError(param("Young modulus", "double", "1e999")), "out of the range of double"));
+  TEST_ASSERT(
+      contains(deckError(param("Young modulus", "double", "1e999")), "out of the range of double"));
   TEST_ASSERT(contains(deckError(param("Cycles", "int", "1.5")),
                        "'Material/Cycles' = '1.5' is not an int (trailing characters '.5')"));
   TEST_ASSERT(contains(deckError(param("Cycles", "int", "99999999999999999999")),
@@ -255,23 +266,28 @@ TEUCHOS_UNIT_TEST(Parameters, XmlNumbersAreParsedStrictly)
   TEST_ASSERT(contains(deckError(param("Cycles", "int", "3000000000")), "out of the range of int"));
   const std::string e2 = deckError(param("Value", "Array(double)", "{0, abc}"));
   out << e2 << "\n";
-  TEST_ASSERT(contains(e2, "'Material/Value' = '{0, abc}' is not an Array(double) (entry 2 'abc': not a number)"));
-  TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "{0, nan}")), "entry 2 'nan': not a finite number"));
-  TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "{0, }")), "entry 2 '': empty value"));
+  TEST_ASSERT(contains(
+      e2, "'Material/Value' = '{0, abc}' is not an Array(double) (entry 2 'abc': not a number)"));
+  TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "{0, nan}")),
+                       "entry 2 'nan': not a finite number"));
+  TEST_ASSERT(
+      contains(deckError(param("Value", "Array(double)", "{0, }")), "entry 2 '': empty value"));
   TEST_ASSERT(contains(deckError(param("Value", "Array(double)", "0, 1")), "braces"));
-  TEST_ASSERT(contains(deckError(param("Flag", "bool", "maybe")), "is not a bool (expected true or false)"));
+  TEST_ASSERT(contains(deckError(param("Flag", "bool", "maybe")),
+                       "is not a bool (expected true or false)"));
   // Valid texts pass: blanks around the value, exponents, signs, empty arrays, bool spellings.
   TEST_EQUALITY(deckError(param("A", "double", " 2.06e4 ") + param("B", "int", "-3") +
-                          param("C", "Array(double)", "{ 0, -0.01 }") + param("D", "Array(double)", "{}") +
-                          param("E", "bool", "true") + param("F", "bool", "FALSE") +
-                          param("G", "string", "anything, 1.5abc")),
+                          param("C", "Array(double)", "{ 0, -0.01 }") +
+                          param("D", "Array(double)", "{}") + param("E", "bool", "true") +
+                          param("F", "bool", "FALSE") + param("G", "string", "anything, 1.5abc")),
                 "");
 }
 
 TEUCHOS_UNIT_TEST(Parameters, DuplicateKeysInXmlAreErrors)
 {
-  const std::string e = deckError(param("Poisson ratio", "double", "0.3") + param("Young modulus", "double", "1") +
-                                  param("Poisson ratio", "double", "0.4"));
+  const std::string e =
+      deckError(param("Poisson ratio", "double", "0.3") + param("Young modulus", "double", "1") +
+                param("Poisson ratio", "double", "0.4"));
   out << e << "\n";
   TEST_ASSERT(contains(e, "'Material/Poisson ratio' is given twice in 'Material'"));
   TEST_ASSERT(contains(deckError("<ParameterList name=\"X\"/><ParameterList name=\"X\"/>"),
@@ -290,17 +306,22 @@ TEUCHOS_UNIT_TEST(Parameters, OverridesAreParsedStrictly)
     }
     return std::string();
   };
-  TEST_ASSERT(contains(overrideError("Material/Poisson ratio=0.3abc"), "trailing characters 'abc'"));
+  TEST_ASSERT(
+      contains(overrideError("Material/Poisson ratio=0.3abc"), "trailing characters 'abc'"));
   TEST_ASSERT(contains(overrideError("Material/Poisson ratio="), "empty value"));
   TEST_ASSERT(contains(overrideError("Adaptivity/Cycles=1.5"), "trailing characters '.5'"));
-  TEST_ASSERT(contains(overrideError("Adaptivity/Cycles=99999999999999999999"), "out of the range of int"));
-  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top/Value={0, abc}"), "entry 2 'abc': not a number"));
-  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top/Value={0, nan}"), "not a finite number"));
+  TEST_ASSERT(
+      contains(overrideError("Adaptivity/Cycles=99999999999999999999"), "out of the range of int"));
+  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top/Value={0, abc}"),
+                       "entry 2 'abc': not a number"));
+  TEST_ASSERT(
+      contains(overrideError("Boundary Conditions/Top/Value={0, nan}"), "not a finite number"));
   const std::string sub = overrideError("Material=1");
   out << sub << "\n";
   TEST_ASSERT(contains(sub, "'Material' is a sublist, not a key"));
   TEST_ASSERT(contains(sub, "'Young modulus', 'Poisson ratio'"));
-  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top=1"), "'Boundary Conditions/Top' is a sublist"));
+  TEST_ASSERT(contains(overrideError("Boundary Conditions/Top=1"),
+                       "'Boundary Conditions/Top' is a sublist"));
   TEST_EQUALITY(overrideError("Material/Poisson ratio= 0.25 "), "");
 }
 
@@ -348,8 +369,9 @@ TEUCHOS_UNIT_TEST(Parameters, DeckNestingDepthIsLimited)
   TEST_EQUALITY(readError(limit - 2), "");
   const std::string e = readError(limit - 1);
   out << e << "\n";
-  TEST_ASSERT(contains(e, "the input deck 'core_unit_tests_deep.xml' nests its XML elements 65 levels "
-                          "deep; at most 64 levels are accepted"));
+  TEST_ASSERT(contains(e,
+                       "the input deck 'core_unit_tests_deep.xml' nests its XML elements 65 levels "
+                       "deep; at most 64 levels are accepted"));
   // Far beyond the depth at which Teuchos' conversion overflowed the stack: an error, no crash.
   TEST_ASSERT(contains(readError(100000), "nests its XML elements 100002 levels deep"));
 }

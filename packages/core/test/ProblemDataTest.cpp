@@ -65,7 +65,7 @@ TEUCHOS_UNIT_TEST(ProblemData, IncompressiblePureDisplacementIsAnInputError)
   auto bcs = sc::core::BoundaryConditions::fromParameters(bc, 2);
   const sc::core::Material incompressible{1.0, 0.5}, nearly{1.0, 0.4999};
   TEST_THROW(bcs.checkPressureDetermined({"Top", "Arc"}, incompressible), sc::core::InputError);
-  bcs.checkPressureDetermined({"Top", "Arc"}, nearly);             // well-posed below 0.5
+  bcs.checkPressureDetermined({"Top", "Arc"}, nearly);                  // well-posed below 0.5
   bcs.checkPressureDetermined({"Top", "Arc", "Side"}, incompressible);  // "Side": traction free
   bcs.conditions[1].type = sc::core::BoundaryType::Contact;
   bcs.checkPressureDetermined({"Top", "Arc"}, incompressible);
@@ -130,7 +130,8 @@ TEUCHOS_UNIT_TEST(ProblemData, PlaneStress)
       }()),
       2);
   bcs.checkPressureDetermined({"Top"}, stress05);
-  TEST_THROW(bcs.checkPressureDetermined({"Top"}, sc::core::Material{1.0, 0.5}), sc::core::InputError);
+  TEST_THROW(bcs.checkPressureDetermined({"Top"}, sc::core::Material{1.0, 0.5}),
+             sc::core::InputError);
 }
 
 // The data of Displacement / Traction / Pressure: exactly one of Value, Expression and Data =
@@ -141,10 +142,8 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataKeys)
                  const Teuchos::Array<std::string>& expression) {
     ParameterList bc;
     bc.sublist("Top").set("Type", type);
-    if (!value.empty())
-      bc.sublist("Top").set("Value", value);
-    if (!expression.empty())
-      bc.sublist("Top").set("Expression", expression);
+    if (!value.empty()) bc.sublist("Top").set("Value", value);
+    if (!expression.empty()) bc.sublist("Top").set("Expression", expression);
     return validated(bc);
   };
   const Teuchos::Array<double> none, two(2, 1.0), one(1, 3.0);
@@ -152,27 +151,32 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataKeys)
                    const Teuchos::Array<std::string>& e) {
     return inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(make(type, v, e), 2); });
   };
-  TEST_ASSERT(error("Traction", two, formulas({"0", "y"})).find(
-                  "'Boundary Conditions/Top/Value' and 'Boundary Conditions/Top/Expression' are "
-                  "both given") != std::string::npos);
-  TEST_ASSERT(error("Displacement", none, {}).find(
-                  "'Boundary Conditions/Top' (Type Displacement) has no data: give "
-                  "'Boundary Conditions/Top/Value'") != std::string::npos);
+  TEST_ASSERT(
+      error("Traction", two, formulas({"0", "y"}))
+          .find("'Boundary Conditions/Top/Value' and 'Boundary Conditions/Top/Expression' are "
+                "both given") != std::string::npos);
+  TEST_ASSERT(error("Displacement", none, {})
+                  .find("'Boundary Conditions/Top' (Type Displacement) has no data: give "
+                        "'Boundary Conditions/Top/Value'") != std::string::npos);
   TEST_ASSERT(error("Pressure", two, {}).find("Type Pressure takes one") != std::string::npos);
-  TEST_ASSERT(error("Traction", none, formulas({"x"})).find(
-                  "'Boundary Conditions/Top/Expression' has 1 formulas, but Problem/Dimension is 2") !=
-              std::string::npos);
-  TEST_ASSERT(error("Symmetry", one, {}).find("'Boundary Conditions/Top/Value' is given, but "
-                                              "Type 'Symmetry' takes no data") != std::string::npos);
+  TEST_ASSERT(
+      error("Traction", none, formulas({"x"}))
+          .find(
+              "'Boundary Conditions/Top/Expression' has 1 formulas, but Problem/Dimension is 2") !=
+      std::string::npos);
+  TEST_ASSERT(error("Symmetry", one, {})
+                  .find("'Boundary Conditions/Top/Value' is given, but "
+                        "Type 'Symmetry' takes no data") != std::string::npos);
   TEST_ASSERT(error("Free", none, formulas({"x"})).find("Type 'Free' takes no data") !=
               std::string::npos);
   {
     ParameterList bc;
     bc.sublist("Top").set("Type", std::string("Pressure"));
     bc.sublist("Top").set("Data", std::string("Exact solution"));
-    TEST_ASSERT(inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(validated(bc), 2); })
-                    .find("'Boundary Conditions/Top/Data' = 'Exact solution' is for Type "
-                          "Displacement or Traction") != std::string::npos);
+    TEST_ASSERT(
+        inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(validated(bc), 2); })
+            .find("'Boundary Conditions/Top/Data' = 'Exact solution' is for Type "
+                  "Displacement or Traction") != std::string::npos);
   }
   // A formula that does not compile fails at validation, naming the key and the entry.
   {
@@ -181,7 +185,8 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataKeys)
     bc.sublist("Top").set("Type", std::string("Traction"));
     bc.sublist("Top").set("Expression", formulas({"0", "2*(y+"}));
     valid.set("Boundary Conditions", *sc::core::BoundaryConditions::getValidParameters());
-    const std::string msg = inputErrorOf([&] { sc::core::validateParameters(deck, valid, "deck.xml"); });
+    const std::string msg =
+        inputErrorOf([&] { sc::core::validateParameters(deck, valid, "deck.xml"); });
     TEST_ASSERT(msg.find("deck.xml: 'Boundary Conditions/Top/Expression' entry 2 = '2*(y+' is "
                          "not a valid formula: Unexpected end of expression at position 6") !=
                 std::string::npos);
@@ -248,7 +253,8 @@ TEUCHOS_UNIT_TEST(ProblemData, BodyForce)
                         "smooth' defines the body force") != std::string::npos);
   ParameterList both = gravity;
   both.set("Expression", formulas({"0", "-1"}));
-  TEST_ASSERT(inputErrorOf([&] { read(both, "None"); })
-                  .find("'Body Force/Value' and 'Body Force/Expression' are both given") !=
+  TEST_ASSERT(inputErrorOf([&] {
+                read(both, "None");
+              }).find("'Body Force/Value' and 'Body Force/Expression' are both given") !=
               std::string::npos);
 }

@@ -41,14 +41,12 @@ void checkContinuity(const sc::disc::MixedElasticitySpace& space, Teuchos::Fancy
   double maxJumpRT = 0.0, maxRT = 0.0, maxJumpCP = 0.0, maxCP = 0.0;
   int checkedFaces = 0;
   for (int f = 0; f < m.numFaces(); ++f) {
-    if (m.isBoundaryFace(f))
-      continue;
+    if (m.isBoundaryFace(f)) continue;
     const auto el = m.faceElements(f);
     int lf[2] = {-1, -1};
     for (int s = 0; s < 2; ++s)
       for (int i = 0; i <= d; ++i)
-        if (m.elementFaces(el[s])[i] == f)
-          lf[s] = i;
+        if (m.elementFaces(el[s])[i] == f) lf[s] = i;
     fa.reinit(el[0], lf[0]);
     fb.reinit(el[1], lf[1]);
     // Match quadrature points by position (the two sides may traverse the face differently).
@@ -59,8 +57,7 @@ void checkContinuity(const sc::disc::MixedElasticitySpace& space, Teuchos::Fancy
         double dist = 0.0;
         for (int i = 0; i < d; ++i)
           dist += std::pow(fa.point(q)[i] - fb.point(p)[i], 2);
-        if (dist < 1e-24)
-          match[q] = p;
+        if (dist < 1e-24) match[q] = p;
       }
     for (int q = 0; q < nq; ++q)
       TEST_ASSERT(match[q] >= 0);
@@ -101,8 +98,8 @@ void checkContinuity(const sc::disc::MixedElasticitySpace& space, Teuchos::Fancy
   TEST_COMPARE(maxJumpCP, <=, 1e-12 * maxCP);
 }
 
-void checkDivergenceTheorem(const sc::disc::MixedElasticitySpace& space,
-                            Teuchos::FancyOStream& out, bool& success)
+void checkDivergenceTheorem(const sc::disc::MixedElasticitySpace& space, Teuchos::FancyOStream& out,
+                            bool& success)
 {
   const auto& m = space.mesh();
   const int d = m.dim(), k = space.degree();
@@ -111,7 +108,8 @@ void checkDivergenceTheorem(const sc::disc::MixedElasticitySpace& space,
   double worst = 0.0;
   for (int e = 0; e < std::min(m.numElements(), 200); ++e) {
     ev.reinit(e);
-    std::vector<double> volume(space.stressBasisSize(), 0.0), boundary(space.stressBasisSize(), 0.0);
+    std::vector<double> volume(space.stressBasisSize(), 0.0),
+        boundary(space.stressBasisSize(), 0.0);
     for (int a = 0; a < space.stressBasisSize(); ++a)
       for (int q = 0; q < ev.numPoints(); ++q)
         volume[a] += ev.stressDiv(a, q) * ev.weight(q);
@@ -122,8 +120,8 @@ void checkDivergenceTheorem(const sc::disc::MixedElasticitySpace& space,
           boundary[a] += fv.stressNormal(a, q) * fv.weight(q);
     }
     for (int a = 0; a < space.stressBasisSize(); ++a)
-      worst = std::max(worst, std::abs(volume[a] - boundary[a]) /
-                                  std::max(1.0, std::abs(volume[a])));
+      worst =
+          std::max(worst, std::abs(volume[a] - boundary[a]) / std::max(1.0, std::abs(volume[a])));
   }
   out << "divergence theorem worst relative defect " << worst << "\n";
   TEST_COMPARE(worst, <=, 1e-11);
@@ -157,8 +155,7 @@ TEUCHOS_UNIT_TEST(MixedElasticitySpace, DofCounts3D)
   // dim RT_1(tet) = (k+1)(k+2)(k+4)/2 = 15, 3 DOFs per face, 3 interior.
   TEST_EQUALITY(space.stressBasisSize(), 15);
   TEST_EQUALITY(space.stressFaceDofs(), 3);
-  TEST_EQUALITY(space.numStressDofs(),
-                3 * (3LL * mesh->numFaces() + 3LL * mesh->numElements()));
+  TEST_EQUALITY(space.numStressDofs(), 3 * (3LL * mesh->numFaces() + 3LL * mesh->numElements()));
   TEST_EQUALITY(space.numRotationDofs(), 3LL * mesh->numVertices());
 }
 
@@ -224,7 +221,8 @@ TEUCHOS_UNIT_TEST(FaceDofPoints, PointValuesOnBoundaryFaces)
       // Position along the edge: x = a + s (b − a), s ∈ {1/3, 2/3}.
       const double len2 = std::pow(b[0] - a[0], 2) + std::pow(b[1] - a[1], 2);
       const double s = ((p.x[0] - a[0]) * (b[0] - a[0]) + (p.x[1] - a[1]) * (b[1] - a[1])) / len2;
-      const double off = std::abs((p.x[0] - a[0]) * (b[1] - a[1]) - (p.x[1] - a[1]) * (b[0] - a[0]));
+      const double off =
+          std::abs((p.x[0] - a[0]) * (b[1] - a[1]) - (p.x[1] - a[1]) * (b[0] - a[0]));
       TEST_COMPARE(off, <=, 1e-12);
       fractions.push_back(s);
       // Intrepid2 13.2 scaling (docs/theory.md §"Contact and friction"): |s_j| = 2/|e|.
@@ -290,10 +288,12 @@ TEUCHOS_UNIT_TEST(CurvedElements, NormalContinuityAndDivergence)
     const auto s = makeCurved(dim == 2 ? "Half disc" : "Half ball", dim, dim == 2 ? 0.3 : 0.5);
     TEST_COMPARE(s.curved->numCurvedElements(), >, 0);
     out << dim << "D: " << s.curved->numCurvedElements() << " curved of "
-        << s.refiner->mesh()->numElements() << " elements, max bulge " << s.curved->maxRelativeBulge() << "\n";
+        << s.refiner->mesh()->numElements() << " elements, max bulge "
+        << s.curved->maxRelativeBulge() << "\n";
     for (int k : {1, 2}) {
       auto mesh = s.refiner->mesh();
-      sc::disc::MixedElasticitySpace space(mesh, k, std::vector<int>(mesh->numElements(), 0), 0, s.curved);
+      sc::disc::MixedElasticitySpace space(mesh, k, std::vector<int>(mesh->numElements(), 0), 0,
+                                           s.curved);
       checkContinuity(space, out, success);
       checkDivergenceTheorem(space, out, success);
     }
@@ -308,7 +308,8 @@ TEUCHOS_UNIT_TEST(CurvedElements, DomainMeasureConvergesAtOrderFour)
   const auto coarse = makeCurved("Half disc", 2, 0.25), fine = makeCurved("Half disc", 2, 0.25, 2);
   const double s0 = measureError(coarse, 1), s1 = measureError(fine, 1);
   const double c0 = measureError(coarse, 2), c1 = measureError(fine, 2);
-  out << "half disc |Ω_h|/|Ω| − 1: straight " << s0 << " → " << s1 << ", curved " << c0 << " → " << c1 << "\n";
+  out << "half disc |Ω_h|/|Ω| − 1: straight " << s0 << " → " << s1 << ", curved " << c0 << " → "
+      << c1 << "\n";
   // Two uniform 2D levels (×4 elements each) divide h by 4: straight ×16, curved ×256
   // (measured 16.0 and 255).
   TEST_COMPARE(s0 / s1, >, 12.0);
@@ -327,7 +328,8 @@ TEUCHOS_UNIT_TEST(CurvedElements, FaceDofPointsOnTheCurve)
   const auto s = makeCurved("Half disc", 2, 0.3);
   auto mesh = s.refiner->mesh();
   for (int k : {1, 2}) {
-    sc::disc::MixedElasticitySpace space(mesh, k, std::vector<int>(mesh->numElements(), 0), 0, s.curved);
+    sc::disc::MixedElasticitySpace space(mesh, k, std::vector<int>(mesh->numElements(), 0), 0,
+                                         s.curved);
     double worstCurved = 0.0, worstChord = 0.0, worstNormal = 0.0;
     for (int f : mesh->boundaryFacesOf("Arc")) {
       const int e = mesh->faceElements(f)[0];
@@ -336,7 +338,8 @@ TEUCHOS_UNIT_TEST(CurvedElements, FaceDofPointsOnTheCurve)
         ++lf;
       for (const auto& p : sc::disc::stressFaceDofPoints(space, e, lf)) {
         // Circle: centre (0, 1), radius 1.
-        const double r = std::hypot(p.x[0], p.x[1] - 1.0), rc = std::hypot(p.xAffine[0], p.xAffine[1] - 1.0);
+        const double r = std::hypot(p.x[0], p.x[1] - 1.0),
+                     rc = std::hypot(p.xAffine[0], p.xAffine[1] - 1.0);
         worstCurved = std::max(worstCurved, std::abs(r - 1.0));
         worstChord = std::max(worstChord, std::abs(rc - 1.0));
         const double nx = p.x[0] / r, ny = (p.x[1] - 1.0) / r;  // exact outward normal

@@ -1,11 +1,13 @@
 // Efficiency of the estimator and convergence of the reconstruction on the ν-robust manufactured
 // solution (numbers in docs/theory.md and docs/verification.md).
 // Sources of the expected numbers:
-// - Efficiency index I = η / ‖A^{1/2}(σ − σ_h)‖: the design notes' (docs/theory.md §"Estimator") independent prototype (2D, k = 1,
+// - Efficiency index I = η / ‖A^{1/2}(σ − σ_h)‖: the design notes' (docs/theory.md §"Estimator")
+// independent prototype (2D, k = 1,
 //   4 levels, ν ∈ {0.3, 0.4999, 0.5}) found η_volume / ‖A^{1/2}(σ − σ_h)‖ in [0.94, 1.28],
 //   max/min 1.36; this test asks for max/min < 1.5 over 4 (2D) / 3 (3D) levels and the three ν.
 // - Reconstruction: ‖∇(u − u^R)‖ = O(h^{k+1}) for u^R in P_{k+1} (the local problems reproduce
-//   P_{k+1} and z_h − ∇u = O(h^{k+1})); P_k gives O(h^k) (docs/theory.md §"Estimator": prototype rate 1 for k = 1).
+//   P_{k+1} and z_h − ∇u = O(h^{k+1})); P_k gives O(h^k) (docs/theory.md §"Estimator": prototype
+//   rate 1 for k = 1).
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -75,34 +77,38 @@ std::vector<Row> study(const VerificationSetup& base, const std::vector<double>&
   for (double nu : nus) {
     VerificationSetup s = base;
     s.nu = nu;
-    sc::test::solveVerification(s, comm, [&](int, const sc::assembly::MixedElasticityAssembler& A,
-                                             const Tpetra::MultiVector<>& x,
-                                             const sc::assembly::ElasticityData& data) {
-      sc::estimator::EstimatorSettings settings;
-      settings.reconstructionDegreeKPlusOne = kPlusOne;
-      sc::estimator::ErrorEstimator estimator(A, settings, comm);
-      const auto est = estimator.estimate(x, data);
-      const auto& m = A.space().mesh();
-      Row r;
-      r.nu = nu;
-      r.h = std::pow(m.measure() / m.numElements(), 1.0 / s.dim);
-      r.dofs = A.space().numGlobalDofs();
-      r.error = sc::assembly::computeStressEnergyError(A, x, *data.exactSolution, data.material, *comm);
-      r.volume = est.squared("volume");
-      r.asymmetry = est.squared("asymmetry");
-      r.oscillation = est.squared("oscillation");
-      r.gradError = gradientError(A, estimator.reconstruction(), *data.exactSolution, *comm);
-      rows.push_back(r);
-    });
+    sc::test::solveVerification(
+        s, comm,
+        [&](int, const sc::assembly::MixedElasticityAssembler& A, const Tpetra::MultiVector<>& x,
+            const sc::assembly::ElasticityData& data) {
+          sc::estimator::EstimatorSettings settings;
+          settings.reconstructionDegreeKPlusOne = kPlusOne;
+          sc::estimator::ErrorEstimator estimator(A, settings, comm);
+          const auto est = estimator.estimate(x, data);
+          const auto& m = A.space().mesh();
+          Row r;
+          r.nu = nu;
+          r.h = std::pow(m.measure() / m.numElements(), 1.0 / s.dim);
+          r.dofs = A.space().numGlobalDofs();
+          r.error = sc::assembly::computeStressEnergyError(A, x, *data.exactSolution, data.material,
+                                                           *comm);
+          r.volume = est.squared("volume");
+          r.asymmetry = est.squared("asymmetry");
+          r.oscillation = est.squared("oscillation");
+          r.gradError = gradientError(A, estimator.reconstruction(), *data.exactSolution, *comm);
+          rows.push_back(r);
+        });
   }
-  out << "\n" << base.dim << "D k=" << base.degree << ", u^R in P_" << (kPlusOne ? "{k+1}" : "k") << "\n"
+  out << "\n"
+      << base.dim << "D k=" << base.degree << ", u^R in P_" << (kPlusOne ? "{k+1}" : "k") << "\n"
       << "  nu      dofs    |A^1/2(s-sh)|  I_vol  I_vol+asym  I_total  |grad(u-uR)|\n";
   for (const auto& r : rows)
-    out << "  " << std::setw(6) << std::setprecision(6) << r.nu << std::setw(9) << r.dofs << "  " << std::scientific
-        << std::setprecision(3) << r.error << std::defaultfloat << std::setprecision(4) << "  "
-        << std::sqrt(r.volume) / r.error << "  " << std::sqrt(r.volume + r.asymmetry) / r.error
-        << "  " << std::sqrt(r.volume + r.asymmetry + r.oscillation) / r.error << "  "
-        << std::scientific << std::setprecision(3) << r.gradError << std::defaultfloat << "\n";
+    out << "  " << std::setw(6) << std::setprecision(6) << r.nu << std::setw(9) << r.dofs << "  "
+        << std::scientific << std::setprecision(3) << r.error << std::defaultfloat
+        << std::setprecision(4) << "  " << std::sqrt(r.volume) / r.error << "  "
+        << std::sqrt(r.volume + r.asymmetry) / r.error << "  "
+        << std::sqrt(r.volume + r.asymmetry + r.oscillation) / r.error << "  " << std::scientific
+        << std::setprecision(3) << r.gradError << std::defaultfloat << "\n";
   return rows;
 }
 
@@ -154,8 +160,10 @@ void efficiency(int dim, int degree, Teuchos::FancyOStream& out, bool& success)
     Band fine;
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (i % s.levels != 0)
-        fine.add(std::sqrt(rows[i].volume + rows[i].asymmetry + rows[i].oscillation) / rows[i].error);
-    out << "  total on the finer 3D meshes [" << fine.lo << ", " << fine.hi << "] ratio " << fine.ratio() << "\n";
+        fine.add(std::sqrt(rows[i].volume + rows[i].asymmetry + rows[i].oscillation) /
+                 rows[i].error);
+    out << "  total on the finer 3D meshes [" << fine.lo << ", " << fine.hi << "] ratio "
+        << fine.ratio() << "\n";
     TEST_COMPARE(fine.ratio(), <, 1.5);
   }
   // With the asymmetry term η is above the error on every level (guaranteed-bound-like).
@@ -190,8 +198,8 @@ void reconstructionDegreeK(Teuchos::FancyOStream& out, bool& success)
     vol.add(std::sqrt(r.volume) / r.error);
   }
   const double rate = fitted(h, g);
-  out << "  rate of |grad(u - u^R)| (P_k): " << rate << "; eta_volume/err from " << vol.lo
-      << " to " << vol.hi << "\n";
+  out << "  rate of |grad(u - u^R)| (P_k): " << rate << "; eta_volume/err from " << vol.lo << " to "
+      << vol.hi << "\n";
   TEST_COMPARE(rate, <, 1.2);
   TEST_COMPARE(rate, >, 0.8);
 }

@@ -30,8 +30,7 @@ TEUCHOS_UNIT_TEST(AtomicFile, WritesReplacesAndLeavesNoTemporary)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string dir = freshDirectory(*comm, "atomic");
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   const std::string path = dir + "/a.txt";
   sc::io::writeFileAtomically(path, "first\n");
   TEST_EQUALITY(readAll(path), "first\n");
@@ -44,8 +43,7 @@ TEUCHOS_UNIT_TEST(AtomicFile, AbandonedWriteKeepsOldContentAndRemovesTemporary)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string dir = freshDirectory(*comm, "atomic_abandon");
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   const std::string path = dir + "/b.txt";
   sc::io::writeFileAtomically(path, "complete\n");
   {
@@ -78,7 +76,7 @@ TEUCHOS_UNIT_TEST(OutputDirectory, CreatesNestedDirectories)
   TEST_ASSERT(std::filesystem::is_directory(dir));
   TEST_EQUALITY(std::distance(std::filesystem::directory_iterator(dir),
                               std::filesystem::directory_iterator()),
-                0);  // the writability probe is removed
+                0);                           // the writability probe is removed
   sc::io::createOutputDirectory(dir, *comm);  // existing directory: fine
 }
 
@@ -87,10 +85,10 @@ TEUCHOS_UNIT_TEST(OutputDirectory, UnusableDirectoryThrowsInputErrorOnAllRanks)
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base = freshDirectory(*comm, "outdir_bad");
   const std::string regularFile = base + "/plain_file";
-  if (comm->getRank() == 0)
-    std::ofstream(regularFile) << "not a directory\n";
+  if (comm->getRank() == 0) std::ofstream(regularFile) << "not a directory\n";
   comm->barrier();
-  for (const std::string& bad : {regularFile + "/sub", regularFile, std::string("/proc/forbidden")}) {
+  for (const std::string& bad :
+       {regularFile + "/sub", regularFile, std::string("/proc/forbidden")}) {
     bool threw = false;
     try {
       sc::io::createOutputDirectory(bad, *comm);

@@ -1,5 +1,5 @@
-// CheckpointFile (docs/output.md "checkpoint.h5"): round trip, atomic replacement, errors naming the file;
-// removeFilesAfterCycle.
+// CheckpointFile (docs/output.md "checkpoint.h5"): round trip, atomic replacement, errors naming
+// the file; removeFilesAfterCycle.
 #include <sc/io/CheckpointFile.hpp>
 
 #include <hdf5.h>
@@ -42,8 +42,7 @@ TEUCHOS_UNIT_TEST(CheckpointFile, RoundTripIsExactAndReplacesAtomically)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string dir = freshDirectory(*comm, "checkpoint");
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   const std::string path = dir + "/checkpoint.h5";
   sc::io::CheckpointFile cp;
   const std::vector<double> x = {0.1, -1e-300, std::numeric_limits<double>::max(), 1.0 / 3.0};
@@ -59,7 +58,7 @@ TEUCHOS_UNIT_TEST(CheckpointFile, RoundTripIsExactAndReplacesAtomically)
   TEST_EQUALITY(back.ints("empty").size(), 0u);
   TEST_EQUALITY(back.string("s"), std::string("{\"a\": \"\xc3\xa9\"}\0z", 15));
   TEST_ASSERT(contains(inputErrorOf([&] { back.ints("x"); }),
-                                     "the checkpoint '" + path + "' has no integer dataset 'x'"));
+                       "the checkpoint '" + path + "' has no integer dataset 'x'"));
   // Written again: replaced, no temporary left.
   cp.setInts("n", {5});
   cp.write(path);
@@ -74,8 +73,7 @@ TEUCHOS_UNIT_TEST(CheckpointFile, EveryFlippedBitInTheDatasetsIsRefused)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string dir = freshDirectory(*comm, "checkpoint_flips");
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   const std::string path = dir + "/checkpoint.h5";
   sc::io::CheckpointFile cp;
   cp.setDoubles("mesh_coordinates", {0.0, 1.0, -0.5, 0.25, 1e-3});
@@ -123,8 +121,7 @@ TEUCHOS_UNIT_TEST(CheckpointFile, MissingOrForeignFilesAreNamed)
 {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string dir = freshDirectory(*comm, "checkpoint_errors");
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   TEST_ASSERT(contains(inputErrorOf([&] { sc::io::CheckpointFile::read(dir + "/none.h5"); }),
                        "no checkpoint '" + dir + "/none.h5'"));
   std::ofstream(dir + "/text.h5") << "hello\n";
@@ -137,19 +134,19 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RestartRemovesTheFilesOfLaterCycles)
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string dir = freshDirectory(*comm, "restart_cleanup");
   if (comm->getRank() == 0)
-    for (const char* f : {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
-                          "sol_c0003.h5", "sol_c0012.h5", "contact_cycle2.csv", "contact_cycle3.csv",
-                          "contact_cycle10.csv", "sol_c0001.h5.tmp.77", "checkpoint.h5.tmp.5",
-                          "notes.txt", "other_c0009.h5", "history.csv", "history.csv.tmp.8"})
+    for (const char* f :
+         {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
+          "sol_c0003.h5", "sol_c0012.h5", "contact_cycle2.csv", "contact_cycle3.csv",
+          "contact_cycle10.csv", "sol_c0001.h5.tmp.77", "checkpoint.h5.tmp.5", "notes.txt",
+          "other_c0009.h5", "history.csv", "history.csv.tmp.8"})
       std::ofstream(dir + "/" + f) << "x";
   comm->barrier();
   const auto removed = sc::io::removeFilesAfterCycle(dir, "sol", 2, *comm);
   TEST_EQUALITY(removed.size(), 7u);
-  if (comm->getRank() != 0)
-    return;
-  const std::vector<std::string> expected = {"checkpoint.h5.tmp.5", "contact_cycle10.csv",
-                                             "contact_cycle3.csv", "history.csv.tmp.8",
-                                             "sol_c0001.h5.tmp.77", "sol_c0003.h5", "sol_c0012.h5"};
+  if (comm->getRank() != 0) return;
+  const std::vector<std::string> expected = {
+      "checkpoint.h5.tmp.5", "contact_cycle10.csv", "contact_cycle3.csv", "history.csv.tmp.8",
+      "sol_c0001.h5.tmp.77", "sol_c0003.h5",        "sol_c0012.h5"};
   TEST_ASSERT(removed == expected);
   for (const char* f : {"summary.json", "checkpoint.h5", "sol.xdmf", "sol_c0000.h5", "sol_c0002.h5",
                         "contact_cycle2.csv", "notes.txt", "other_c0009.h5", "history.csv"})

@@ -23,9 +23,15 @@ using sc::io::test::temporaries;
 // Awkward doubles: not representable in decimal, extremes, subnormal, negative zero.
 std::vector<double> valuesOfRank(int rank)
 {
-  return {rank + 0.1, 1.0 / 3.0 * (rank + 1), std::nextafter(1.0, 2.0), 1e-300,
-          std::numeric_limits<double>::denorm_min(), -0.0, std::numeric_limits<double>::max(),
-          -2.5e17 * (rank + 1), M_PI};
+  return {rank + 0.1,
+          1.0 / 3.0 * (rank + 1),
+          std::nextafter(1.0, 2.0),
+          1e-300,
+          std::numeric_limits<double>::denorm_min(),
+          -0.0,
+          std::numeric_limits<double>::max(),
+          -2.5e17 * (rank + 1),
+          M_PI};
 }
 
 std::vector<std::string> splitLines(const std::string& text)
@@ -73,12 +79,12 @@ TEUCHOS_UNIT_TEST(CsvWriter, GatheredInRankOrderBitExact)
   // Rank 1 contributes no rows: empty pieces must work.
   if (rank != 1)
     for (double v : valuesOfRank(rank))
-      csv.addRow({static_cast<double>(rank), std::string("r, \"") + std::to_string(rank) + "\"", v});
+      csv.addRow(
+          {static_cast<double>(rank), std::string("r, \"") + std::to_string(rank) + "\"", v});
   const std::string path = dir + "/contact_cycle0.csv";
   csv.writeGathered(*comm, path);
   comm->barrier();
-  if (rank != 0)
-    return;
+  if (rank != 0) return;
   std::ifstream in(path);
   std::stringstream s;
   s << in.rdbuf();
@@ -87,12 +93,10 @@ TEUCHOS_UNIT_TEST(CsvWriter, GatheredInRankOrderBitExact)
   TEST_EQUALITY(lines[0], "rank,label,value");
   std::size_t line = 1;
   for (int r = 0; r < size; ++r) {
-    if (r == 1)
-      continue;
+    if (r == 1) continue;
     for (double v : valuesOfRank(r)) {
       TEST_ASSERT(line < lines.size());
-      if (line >= lines.size())
-        return;
+      if (line >= lines.size()) return;
       const auto f = splitFields(lines[line++]);
       TEST_EQUALITY(f.size(), 3u);
       TEST_EQUALITY(std::strtod(f[0].c_str(), nullptr), static_cast<double>(r));

@@ -23,11 +23,17 @@ Json contactCycles()
   Json c0 = sc::io::RunSummary::makeCycleEntry(0);
   c0["elements"] = 390;
   c0["dofs"]["total"] = 6566;
-  c0["eta"] = {{"total", 0.5},           {"volume", 0.25},   {"asymmetry", 0.125},
-               {"oscillation", 0.0},     {"friction", 0.375}, {"contact_normal_signed", -1e-3},
-               {"stress_energy_norm", 10.0}, {"relative", 0.05}, {"marked_elements", 17}};
+  c0["eta"] = {{"total", 0.5},
+               {"volume", 0.25},
+               {"asymmetry", 0.125},
+               {"oscillation", 0.0},
+               {"friction", 0.375},
+               {"contact_normal_signed", -1e-3},
+               {"stress_energy_norm", 10.0},
+               {"relative", 0.05},
+               {"marked_elements", 17}};
   c0["contact"] = {{"force", {1.5, 108.25}},      {"half_width", 0.0625}, {"max_pressure", 900.5},
-                   {"stick_half_width", 0.03125}, {"area", 0.125}, {"stick_area", 0.0625},
+                   {"stick_half_width", 0.03125}, {"area", 0.125},        {"stick_area", 0.0625},
                    {"newton_iterations", 4}};
   c0["reactions"] = {{"Top", {{"type", "Displacement"}, {"force", {-1.5, -108.25}}}}};
   c0["nonlinear_iterations"] = 4;
@@ -72,12 +78,14 @@ TEUCHOS_UNIT_TEST(HistoryTable, ElasticityRun3DHasNoContactColumns)
   Json c = sc::io::RunSummary::makeCycleEntry(0);
   c["elements"] = 48;
   c["dofs"]["total"] = 4452;
-  c["eta"] = {{"total", 2.0}, {"volume", 1.0}, {"stress_energy_error", 1.5}, {"efficiency_index", 1.25}};
+  c["eta"] = {
+      {"total", 2.0}, {"volume", 1.0}, {"stress_energy_error", 1.5}, {"efficiency_index", 1.25}};
   c["linear_solves"] = 1;
   c["timings"] = {{"solve", 0.5}};
   const std::string text = sc::io::formatHistory(Json::array({c}), 3, false);
   out << text;
-  TEST_EQUALITY(text, std::string("cycle,elements,dofs,eta,eta_relative,eta_volume,linear_solves,krylov_iterations,seconds\n"
+  TEST_EQUALITY(text, std::string("cycle,elements,dofs,eta,eta_relative,eta_volume,linear_solves,"
+                                  "krylov_iterations,seconds\n"
                                   "0,48,4452,2,,1,1,,0.5\n"));
   // A 3D contact run names the third force component and the radii.
   const auto columns = sc::io::historyColumns(Json::array({c}), 3, true);
@@ -93,8 +101,7 @@ TEUCHOS_UNIT_TEST(HistoryTable, WrittenAtomicallyByRankZero)
   const std::string dir = sc::io::test::freshDirectory(*comm, "history");
   sc::io::writeHistory(*comm, dir, contactCycles(), 2, true);
   comm->barrier();
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   std::ifstream in(dir + "/history.csv");
   std::stringstream s;
   s << in.rdbuf();

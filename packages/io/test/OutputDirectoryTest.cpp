@@ -36,15 +36,15 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RemovesOnlyTheFilesOfAnEarlierRun)
   const std::string dir = freshDirectory("stale");
   // An earlier run with Base name "old": its summary records it.
   touch(dir + "/summary.json", R"({"parameters": {"Output": {"Base name": "old"}}})");
-  for (const char* f : {"old.xdmf", "old_c0000.h5", "old_c0001.h5", "solution.xdmf",
-                        "solution_c0003.h5", "contact_cycle0.csv", "contact_cycle12.csv",
-                        "solution_c0002.h5.tmp.4242", "summary.json.tmp.17", "history.csv",
-                        "history.csv.tmp.99"})
+  for (const char* f :
+       {"old.xdmf", "old_c0000.h5", "old_c0001.h5", "solution.xdmf", "solution_c0003.h5",
+        "contact_cycle0.csv", "contact_cycle12.csv", "solution_c0002.h5.tmp.4242",
+        "summary.json.tmp.17", "history.csv", "history.csv.tmp.99"})
     touch(dir + "/" + f);
   // Not ours: kept.
-  const std::vector<std::string> kept = {"notes.txt", "mesh.msh", "other.xdmf", "old_c.h5",
-                                         "contact_cycle.csv", "solution_c0001.h5.bak", "my.json",
-                                         "history_old.csv"};
+  const std::vector<std::string> kept = {"notes.txt", "mesh.msh",          "other.xdmf",
+                                         "old_c.h5",  "contact_cycle.csv", "solution_c0001.h5.bak",
+                                         "my.json",   "history_old.csv"};
   for (const auto& f : kept)
     touch(dir + "/" + f);
   fs::create_directories(dir + "/contact_cycle3.csv");  // a directory is never removed
@@ -52,10 +52,9 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RemovesOnlyTheFilesOfAnEarlierRun)
   const auto removed = sc::io::removeEarlierRunFiles(dir, "solution");
   TEST_COMPARE_ARRAYS(removed, (std::vector<std::string>{
                                    "contact_cycle0.csv", "contact_cycle12.csv", "history.csv",
-                                   "history.csv.tmp.99", "old.xdmf",
-                                   "old_c0000.h5", "old_c0001.h5", "solution.xdmf",
-                                   "solution_c0002.h5.tmp.4242", "solution_c0003.h5",
-                                   "summary.json", "summary.json.tmp.17"}));
+                                   "history.csv.tmp.99", "old.xdmf", "old_c0000.h5", "old_c0001.h5",
+                                   "solution.xdmf", "solution_c0002.h5.tmp.4242",
+                                   "solution_c0003.h5", "summary.json", "summary.json.tmp.17"}));
   for (const auto& f : kept)
     TEST_ASSERT(fs::exists(dir + "/" + f));
   TEST_ASSERT(fs::is_directory(dir + "/contact_cycle3.csv"));
@@ -68,8 +67,8 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RemovesOnlyTheFilesOfAnEarlierRun)
 TEUCHOS_UNIT_TEST(OutputDirectory, CheckCreatesNothingAndNamesTheProblem)
 {
   const std::string dir = freshDirectory("check");
-  sc::io::checkOutputDirectory(dir);                   // exists, writable
-  sc::io::checkOutputDirectory(dir + "/new/sub");      // would be created
+  sc::io::checkOutputDirectory(dir);               // exists, writable
+  sc::io::checkOutputDirectory(dir + "/new/sub");  // would be created
   TEST_ASSERT(!fs::exists(dir + "/new"));
   TEST_EQUALITY(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
   touch(dir + "/file");
@@ -103,12 +102,13 @@ TEUCHOS_UNIT_TEST(OutputDirectory, RunFileNamesTakenByDirectoriesAreInputErrors)
   fs::create_directories(dir + "/fields_c.h5");
   TEST_EQUALITY(error(), "");
   sc::io::checkRunFileNamesAreFree(dir + "/missing", "fields");
-  for (const std::string name : {"fields.xdmf", "fields_c0012.h5", "contact_cycle3.csv", "history.csv"}) {
+  for (const std::string name :
+       {"fields.xdmf", "fields_c0012.h5", "contact_cycle3.csv", "history.csv"}) {
     fs::create_directories(dir + "/" + name);
     const std::string e = error();
     out << e << "\n";
-    TEST_ASSERT(e.find("'" + dir + "/" + name + "' is a directory, but a run writes its file " + name +
-                       " there") != std::string::npos);
+    TEST_ASSERT(e.find("'" + dir + "/" + name + "' is a directory, but a run writes its file " +
+                       name + " there") != std::string::npos);
     fs::remove(dir + "/" + name);
   }
   fs::remove(dir + "/summary.json");
@@ -140,8 +140,10 @@ TEUCHOS_UNIT_TEST(OutputDirectory, FileNameLengthsAreChecked)
   TEST_EQUALITY(error(dir, std::string(static_cast<std::size_t>(longest), 'b')), "");
   const std::string e = error(dir, std::string(static_cast<std::size_t>(longest + 1), 'b'));
   out << e << "\n";
-  TEST_ASSERT(e.find("Output/Base name is " + std::to_string(longest + 1) + " characters long") != std::string::npos);
-  TEST_ASSERT(e.find("above the limit of " + std::to_string(nameMax) + " per file name (NAME_MAX)") != std::string::npos);
+  TEST_ASSERT(e.find("Output/Base name is " + std::to_string(longest + 1) + " characters long") !=
+              std::string::npos);
+  TEST_ASSERT(e.find("above the limit of " + std::to_string(nameMax) +
+                     " per file name (NAME_MAX)") != std::string::npos);
   TEST_ASSERT(e.find("at most " + std::to_string(longest) + " characters") != std::string::npos);
   // A directory (not created) whose files' paths would exceed PATH_MAX.
   std::string deep = dir;

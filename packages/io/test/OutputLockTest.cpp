@@ -79,9 +79,10 @@ TEUCHOS_UNIT_TEST(OutputLock, OneRunPerDirectory)
     // A second run (here a second lock of this live process) is refused on every rank.
     const std::string e = lockError(*comm, dir);
     out << e << "\n";
-    TEST_ASSERT(contains(e, "the output directory '" + dir + "' is in use by another StressContact run: process " +
-                                std::to_string(pid) + " on this host (" + host() + ") holds its lock '" +
-                                path + "'"));
+    TEST_ASSERT(contains(e, "the output directory '" + dir +
+                                "' is in use by another StressContact run: process " +
+                                std::to_string(pid) + " on this host (" + host() +
+                                ") holds its lock '" + path + "'"));
     TEST_THROW(sc::io::checkOutputLock(dir, *comm), sc::core::InputError);
     // Removing an earlier run's files leaves the lock alone.
     if (rank == 0) {
@@ -93,8 +94,7 @@ TEUCHOS_UNIT_TEST(OutputLock, OneRunPerDirectory)
     comm->barrier();
   }
   // Released at the end.
-  if (rank == 0)
-    TEST_ASSERT(!fs::exists(path));
+  if (rank == 0) TEST_ASSERT(!fs::exists(path));
   sc::io::checkOutputLock(dir, *comm);
   comm->barrier();
 }
@@ -112,15 +112,15 @@ TEUCHOS_UNIT_TEST(OutputLock, StaleLocksAreTakenOver)
   for (const std::string& owner :
        {"pid " + std::to_string(deadPid) + "\nhost " + host() + "\nstart 5\n",
         "pid " + std::to_string(rootPid(*comm)) + "\nhost " + host() + "\nstart 1\n"}) {
-    if (rank == 0)
-      std::ofstream(path) << owner;
+    if (rank == 0) std::ofstream(path) << owner;
     comm->barrier();
     {
       const sc::io::OutputLock lock(*comm, dir);
       if (rank == 0) {
         out << lock.takenOver() << "\n";
-        TEST_ASSERT(contains(lock.takenOver(), "took over the stale lock '" + path + "' of process " +
-                                                   owner.substr(4, owner.find('\n') - 4) + " on this host"));
+        TEST_ASSERT(contains(lock.takenOver(),
+                             "took over the stale lock '" + path + "' of process " +
+                                 owner.substr(4, owner.find('\n') - 4) + " on this host"));
         TEST_ASSERT(contains(readFile(path), "pid " + std::to_string(::getpid()) + "\n"));
         // Nothing else is left in the directory (the stale lock was moved aside, then removed).
         TEST_EQUALITY(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
@@ -129,8 +129,7 @@ TEUCHOS_UNIT_TEST(OutputLock, StaleLocksAreTakenOver)
       }
       comm->barrier();
     }
-    if (rank == 0)
-      TEST_ASSERT(!fs::exists(path));
+    if (rank == 0) TEST_ASSERT(!fs::exists(path));
     comm->barrier();
   }
   // A start time of -1 is unknown: this live pid is then taken at its word (alive).
@@ -148,31 +147,31 @@ TEUCHOS_UNIT_TEST(OutputLock, LocksThatCannotBeCheckedAreRefused)
   const std::string dir = sc::io::test::freshDirectory(*comm, "lock_refused");
   const std::string path = dir + "/stresscontact.lock";
   // A run on another host: alive or not cannot be told from here.
-  if (rank == 0)
-    std::ofstream(path) << "pid 1\nhost another-host.example\nstart 5\n";
+  if (rank == 0) std::ofstream(path) << "pid 1\nhost another-host.example\nstart 5\n";
   comm->barrier();
   std::string e = lockError(*comm, dir);
   out << e << "\n";
-  TEST_ASSERT(contains(e, "process 1 on host 'another-host.example' holds its lock '" + path +
-                              "' (another host: whether that run is still alive cannot be checked"));
+  TEST_ASSERT(
+      contains(e, "process 1 on host 'another-host.example' holds its lock '" + path +
+                      "' (another host: whether that run is still alive cannot be checked"));
   TEST_THROW(sc::io::checkOutputLock(dir, *comm), sc::core::InputError);
   // A file of that name that is no lock, and a directory of that name.
-  if (rank == 0)
-    std::ofstream(path) << "my notes\n";
+  if (rank == 0) std::ofstream(path) << "my notes\n";
   comm->barrier();
   e = lockError(*comm, dir);
   out << e << "\n";
-  TEST_ASSERT(contains(e, "holds '" + path + "', which is not a StressContact lock file (it names no "
-                          "process id and host)"));
+  TEST_ASSERT(contains(e, "holds '" + path +
+                              "', which is not a StressContact lock file (it names no "
+                              "process id and host)"));
   if (rank == 0) {
     fs::remove(path);
     fs::create_directory(path);
   }
   comm->barrier();
-  TEST_ASSERT(contains(lockError(*comm, dir), "which is not a StressContact lock file (it is a directory)"));
+  TEST_ASSERT(contains(lockError(*comm, dir),
+                       "which is not a StressContact lock file (it is a directory)"));
   // The files were left as they were.
-  if (rank == 0)
-    TEST_ASSERT(fs::is_directory(path));
+  if (rank == 0) TEST_ASSERT(fs::is_directory(path));
   comm->barrier();
 }
 
@@ -185,12 +184,10 @@ TEUCHOS_UNIT_TEST(OutputLock, OnlyItsOwnLockIsRemoved)
   {
     const sc::io::OutputLock lock(*comm, dir);
     // Someone replaced the lock (e.g. removed it by hand and started another run).
-    if (rank == 0)
-      std::ofstream(path) << "pid 1\nhost another-host.example\n";
+    if (rank == 0) std::ofstream(path) << "pid 1\nhost another-host.example\n";
     comm->barrier();
   }
-  if (rank == 0)
-    TEST_ASSERT(contains(readFile(path), "another-host.example"));
+  if (rank == 0) TEST_ASSERT(contains(readFile(path), "another-host.example"));
   comm->barrier();
 }
 

@@ -72,16 +72,17 @@ TEUCHOS_UNIT_TEST(RunSummary, CycleEntryHasEverySchemaKey)
   std::vector<std::string> keys;
   for (auto it = c.begin(); it != c.end(); ++it)
     keys.push_back(it.key());
-  TEST_COMPARE_ARRAYS(keys, (std::vector<std::string>{"cycle", "elements", "dofs", "mesh", "eta",
-                                                      "errors", "contact", "reactions", "force_balance",
-                                                      "nonlinear_iterations", "linear_solves",
-                                                      "linear_iterations", "timings", "memory"}));
+  TEST_COMPARE_ARRAYS(keys, (std::vector<std::string>{
+                                "cycle", "elements", "dofs", "mesh", "eta", "errors", "contact",
+                                "reactions", "force_balance", "nonlinear_iterations",
+                                "linear_solves", "linear_iterations", "timings", "memory"}));
   TEST_EQUALITY(c["cycle"].get<int>(), 3);
   for (const char* k : {"stress", "displacement", "rotation", "total"})
     TEST_ASSERT(c["dofs"].contains(k) && c["dofs"][k].is_null());
   for (const char* k : {"vertices", "elements", "measure", "min_angle_deg"})
     TEST_ASSERT(c["mesh"].contains(k) && c["mesh"][k].is_null());
-  for (const char* k : {"eta", "errors", "contact", "reactions", "force_balance", "timings", "memory"})
+  for (const char* k :
+       {"eta", "errors", "contact", "reactions", "force_balance", "timings", "memory"})
     TEST_ASSERT(c[k].is_object() && c[k].empty());
 }
 

@@ -34,8 +34,7 @@ using sc::io::test::temporaries;
 int ownerOfRow(int row, int nrows, int size)
 {
   for (int r = 0; r < size; ++r)
-    if (row < (r + 1) * nrows / size)
-      return r;
+    if (row < (r + 1) * nrows / size) return r;
   return size - 1;
 }
 std::pair<int, int> rowsOf(int rank, int nrows, int size)
@@ -88,8 +87,7 @@ std::vector<GridPiece> pieces2D(const Mesh2D& m, int rank, int size)
   // Boundary: bottom edge (id 1) with square row 0, top edge (id 2) with square row ny-1.
   for (int edge = 0; edge < 2; ++edge) {
     const int squareRow = edge == 0 ? 0 : m.ny - 1;
-    if (squareRow < r0 || squareRow >= r1)
-      continue;
+    if (squareRow < r0 || squareRow >= r1) continue;
     const int j = edge == 0 ? 0 : m.ny;
     for (int i = 0; i < m.nx; ++i) {
       boundary.connectivity.insert(boundary.connectivity.end(), {m.vid(i, j), m.vid(i + 1, j)});
@@ -181,8 +179,7 @@ bool exists(hid_t file, const std::string& path)
   // Check each prefix: H5Lexists fails (not returns 0) if an intermediate group is missing.
   std::size_t pos = 0;
   while ((pos = path.find('/', pos + 1)) != std::string::npos)
-    if (H5Lexists(file, path.substr(0, pos).c_str(), H5P_DEFAULT) <= 0)
-      return false;
+    if (H5Lexists(file, path.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
   return H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0;
 }
 
@@ -190,8 +187,7 @@ Dataset readDataset(hid_t file, const std::string& path)
 {
   Dataset d;
   hid_t dset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  if (dset < 0)
-    return d;
+  if (dset < 0) return d;
   hid_t space = H5Dget_space(dset);
   const int rank = H5Sget_simple_extent_ndims(space);
   d.dims.resize(static_cast<std::size_t>(rank));
@@ -200,8 +196,7 @@ Dataset readDataset(hid_t file, const std::string& path)
   for (hsize_t x : d.dims)
     n *= x;
   d.values.resize(n);
-  if (n > 0)
-    H5Dread(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, d.values.data());
+  if (n > 0) H5Dread(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, d.values.data());
   H5Sclose(space);
   H5Dclose(dset);
   return d;
@@ -210,8 +205,7 @@ Dataset readDataset(hid_t file, const std::string& path)
 std::string readStringAttribute(hid_t file, const std::string& object, const std::string& name)
 {
   hid_t attr = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0)
-    return "<missing>";
+  if (attr < 0) return "<missing>";
   hid_t type = H5Aget_type(attr);
   std::string s(H5Tget_size(type), '\0');
   H5Aread(attr, type, s.data());
@@ -234,8 +228,7 @@ std::vector<double> asDoubles(const std::vector<long long>& v) { return {v.begin
 // 2 -> 3 components (z = 0).
 std::vector<double> pad3(const std::vector<double>& v, int dim)
 {
-  if (dim == 3)
-    return v;
+  if (dim == 3) return v;
   std::vector<double> out;
   for (std::size_t i = 0; i < v.size(); i += 2)
     out.insert(out.end(), {v[i], v[i + 1], 0.0});
@@ -243,8 +236,8 @@ std::vector<double> pad3(const std::vector<double>& v, int dim)
 }
 
 // Checks of the XDMF text: temporal collection, times, and every referenced dataset exists.
-void checkXdmf(const std::string& dir, const std::string& xdmfPath, const std::vector<double>& times,
-               Teuchos::FancyOStream& out, bool& success)
+void checkXdmf(const std::string& dir, const std::string& xdmfPath,
+               const std::vector<double>& times, Teuchos::FancyOStream& out, bool& success)
 {
   std::ifstream in(xdmfPath);
   std::stringstream s;
@@ -256,31 +249,34 @@ void checkXdmf(const std::string& dir, const std::string& xdmfPath, const std::v
               std::string::npos);
   TEST_ASSERT(xml.find("</Xdmf>") != std::string::npos);
   // Well-formedness, minimally: every opening tag of the element types used is closed.
-  for (const std::string tag : {"Grid", "Topology", "Geometry", "Attribute", "DataItem", "Domain"}) {
+  for (const std::string tag :
+       {"Grid", "Topology", "Geometry", "Attribute", "DataItem", "Domain"}) {
     const std::regex open("<" + tag + "[ >]"), close("</" + tag + ">"),
         selfClosing("<" + tag + "[^>]*/>");
     const auto count = [&](const std::regex& re) {
-      return std::distance(std::sregex_iterator(xml.begin(), xml.end(), re), std::sregex_iterator());
+      return std::distance(std::sregex_iterator(xml.begin(), xml.end(), re),
+                           std::sregex_iterator());
     };
     TEST_EQUALITY(count(open) - count(selfClosing), count(close));
   }
   std::vector<double> found;
   const std::regex timeRe("<Time Value=\"([^\"]+)\"/>");
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), timeRe); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), timeRe); it != std::sregex_iterator();
+       ++it)
     found.push_back(std::stod((*it)[1]));
   TEST_COMPARE_ARRAYS(found, times);
   // Every DataItem "file.h5:/path" must exist in that file.
   const std::regex itemRe(">([^<>:]+\\.h5):(/[^<]+)</DataItem>");
   int items = 0;
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), itemRe); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), itemRe); it != std::sregex_iterator();
+       ++it) {
     ++items;
     const std::string file = dir + "/" + (*it)[1].str(), path = (*it)[2];
     hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     TEST_ASSERT(f >= 0);
     if (f >= 0) {
       const bool ok = exists(f, path);
-      if (!ok)
-        out << "missing " << file << ":" << path << "\n";
+      if (!ok) out << "missing " << file << ":" << path << "\n";
       TEST_ASSERT(ok);
       H5Fclose(f);
     }
@@ -300,8 +296,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, TwoDimensionalStripsTwoSteps)
     writer.writeStep(cycle, times[static_cast<std::size_t>(cycle)],
                      pieces2D(meshes[static_cast<std::size_t>(cycle)], rank, size));
   comm->barrier();
-  if (rank != 0)
-    return;
+  if (rank != 0) return;
 
   TEST_EQUALITY(writer.h5Path(1), dir + "/solution_c0001.h5");
   TEST_EQUALITY(temporaries(dir).size(), 0u);
@@ -313,8 +308,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, TwoDimensionalStripsTwoSteps)
     const hsize_t nv = static_cast<hsize_t>(m.nv()), nc = 2u * m.nx * m.ny, nb = 2u * m.nx;
     hid_t f = H5Fopen(writer.h5Path(cycle).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     TEST_ASSERT(f >= 0);
-    if (f < 0)
-      continue;
+    if (f < 0) continue;
     TEST_EQUALITY(readDoubleAttribute(f, "time"), times[static_cast<std::size_t>(cycle)]);
 
     const Dataset geo = readDataset(f, "/domain/geometry");
@@ -360,9 +354,8 @@ TEUCHOS_UNIT_TEST(XdmfWriter, TwoDimensionalStripsTwoSteps)
     TEST_COMPARE_ARRAYS(btopo.dims, (std::vector<hsize_t>{nb, 2}));
     TEST_COMPARE_ARRAYS(btopo.values, asDoubles(bnd.connectivity));
     const Dataset bid = readDataset(f, "/boundary/cell/boundary_id");
-    TEST_COMPARE_ARRAYS(bid.values,
-                        std::vector<double>(bnd.integerCellFields[0].values.begin(),
-                                            bnd.integerCellFields[0].values.end()));
+    TEST_COMPARE_ARRAYS(bid.values, std::vector<double>(bnd.integerCellFields[0].values.begin(),
+                                                        bnd.integerCellFields[0].values.end()));
     const Dataset bpart = readDataset(f, "/boundary/cell/partition");
     std::vector<double> expectedBpart(static_cast<std::size_t>(m.nx), 0.0);
     expectedBpart.resize(nb, ownerOfRow(m.ny - 1, m.ny + 1, size));
@@ -375,10 +368,13 @@ TEUCHOS_UNIT_TEST(XdmfWriter, TwoDimensionalStripsTwoSteps)
   std::ifstream in(writer.xdmfPath());
   std::stringstream s;
   s << in.rdbuf();
-  TEST_ASSERT(s.str().find("<Information Name=\"boundary_names\" Value=\"{&quot;1&quot;:&quot;contact&quot;") !=
-              std::string::npos);
-  TEST_ASSERT(s.str().find("TopologyType=\"Polyline\" NumberOfElements=\"8\" NodesPerElement=\"2\"") !=
-              std::string::npos);
+  TEST_ASSERT(
+      s.str().find(
+          "<Information Name=\"boundary_names\" Value=\"{&quot;1&quot;:&quot;contact&quot;") !=
+      std::string::npos);
+  TEST_ASSERT(
+      s.str().find("TopologyType=\"Polyline\" NumberOfElements=\"8\" NodesPerElement=\"2\"") !=
+      std::string::npos);
 }
 
 TEUCHOS_UNIT_TEST(XdmfWriter, ThreeDimensionalStripsTwoSteps)
@@ -391,8 +387,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, ThreeDimensionalStripsTwoSteps)
   for (int cycle = 0; cycle < 2; ++cycle)
     writer.writeStep(cycle, pieces3D(meshes[static_cast<std::size_t>(cycle)], rank, size));
   comm->barrier();
-  if (rank != 0)
-    return;
+  if (rank != 0) return;
 
   TEST_EQUALITY(temporaries(dir).size(), 0u);
   for (int cycle = 0; cycle < 2; ++cycle) {
@@ -402,8 +397,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, ThreeDimensionalStripsTwoSteps)
     const hsize_t nc = 6u * m.n * m.n * m.nz, nb = 2u * m.n * m.n;
     hid_t f = H5Fopen(writer.h5Path(cycle).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     TEST_ASSERT(f >= 0);
-    if (f < 0)
-      continue;
+    if (f < 0) continue;
     const Dataset geo = readDataset(f, "/domain/geometry");
     TEST_COMPARE_ARRAYS(geo.dims, (std::vector<hsize_t>{nv, 3}));
     TEST_COMPARE_ARRAYS(geo.values, ref[0].coordinates);
@@ -454,8 +448,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, RewritingACycleReplacesItsStep)
   writer.writeStep(1, pieces2D(m, comm->getRank(), comm->getSize()));
   writer.writeStep(1, 7.0, pieces2D(m, comm->getRank(), comm->getSize()));
   comm->barrier();
-  if (comm->getRank() == 0)
-    checkXdmf(dir, writer.xdmfPath(), {0.0, 7.0}, out, success);
+  if (comm->getRank() == 0) checkXdmf(dir, writer.xdmfPath(), {0.0, 7.0}, out, success);
 }
 
 TEUCHOS_UNIT_TEST(XdmfWriter, GridEmptyOnAllRanksIsWrittenToH5AndLeftOutOfXdmf)
@@ -468,8 +461,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, GridEmptyOnAllRanksIsWrittenToH5AndLeftOutOfXdmf)
   grids[1].integerCellFields[0].values.clear();
   writer.writeStep(0, grids);
   comm->barrier();
-  if (comm->getRank() != 0)
-    return;
+  if (comm->getRank() != 0) return;
   hid_t f = H5Fopen(writer.h5Path(0).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   TEST_ASSERT(f >= 0);
   if (f >= 0) {
@@ -492,8 +484,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, BadPieceOnLastRankThrowsInputErrorOnAllRanks)
   const std::string dir = freshDirectory(*comm, "xdmf_bad");
   sc::io::XdmfWriter writer(comm, dir, "solution");
   auto grids = pieces2D({2, 3}, rank, size);
-  if (rank == size - 1)
-    grids[0].pointFields[1].values.push_back(1.0);  // one value too many
+  if (rank == size - 1) grids[0].pointFields[1].values.push_back(1.0);  // one value too many
   bool threw = false;
   try {
     writer.writeStep(0, grids);
@@ -506,8 +497,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, BadPieceOnLastRankThrowsInputErrorOnAllRanks)
 
   // Different field sets on different ranks are caught too (only possible with > 1 rank).
   auto grids2 = pieces2D({2, 3}, rank, size);
-  if (size > 1 && rank == size - 1)
-    grids2[0].pointFields[1].name = "pressure";
+  if (size > 1 && rank == size - 1) grids2[0].pointFields[1].name = "pressure";
   bool threw2 = false;
   try {
     writer.writeStep(0, grids2);
@@ -518,12 +508,10 @@ TEUCHOS_UNIT_TEST(XdmfWriter, BadPieceOnLastRankThrowsInputErrorOnAllRanks)
 
   // Vertex index out of range.
   auto grids3 = pieces2D({2, 3}, rank, size);
-  if (rank == 0)
-    grids3[0].connectivity[0] = 1000;
+  if (rank == 0) grids3[0].connectivity[0] = 1000;
   TEST_THROW(writer.writeStep(0, grids3), sc::core::InputError);
   comm->barrier();
-  if (rank == 0)
-    TEST_EQUALITY(temporaries(dir).size(), 0u);
+  if (rank == 0) TEST_EQUALITY(temporaries(dir).size(), 0u);
 }
 
 // A point cloud (CellType::Vertex, XDMF Polyvertex) beside a mesh grid, as the contact points
@@ -539,8 +527,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, PointCloudGridWithIntegerPointField)
   auto count = [](int r) { return r == 1 ? 0 : 2 * r + 1; };
   int offset = 0, total = 0;
   for (int r = 0; r < size; ++r) {
-    if (r < rank)
-      offset += count(r);
+    if (r < rank) offset += count(r);
     total += count(r);
   }
   GridPiece cloud("contact", CellType::Vertex, 2);
@@ -565,18 +552,15 @@ TEUCHOS_UNIT_TEST(XdmfWriter, PointCloudGridWithIntegerPointField)
   withCells[2].connectivity = {0};
   TEST_THROW(writer.writeStep(1, withCells), sc::core::InputError);
   auto shortField = grids;
-  if (rank == size - 1)
-    shortField[2].integerPointFields[0].values.push_back(7);
+  if (rank == size - 1) shortField[2].integerPointFields[0].values.push_back(7);
   TEST_THROW(writer.writeStep(1, shortField), sc::core::InputError);
   comm->barrier();
-  if (rank != 0)
-    return;
+  if (rank != 0) return;
 
   const auto n = static_cast<hsize_t>(total);
   hid_t f = H5Fopen(writer.h5Path(0).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   TEST_ASSERT(f >= 0);
-  if (f < 0)
-    return;
+  if (f < 0) return;
   std::vector<double> xyz, ids, p, t, st, part;
   for (int r = 0, g = 0; r < size; ++r)
     for (int i = 0; i < count(r); ++i, ++g) {
@@ -611,14 +595,18 @@ TEUCHOS_UNIT_TEST(XdmfWriter, PointCloudGridWithIntegerPointField)
   s << in.rdbuf();
   const std::string xml = s.str();
   TEST_ASSERT(xml.find("<Grid Name=\"contact\" GridType=\"Uniform\">") != std::string::npos);
-  TEST_ASSERT(xml.find("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + std::to_string(total) +
-                       "\" NodesPerElement=\"1\">") != std::string::npos);
+  TEST_ASSERT(xml.find("<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" +
+                       std::to_string(total) + "\" NodesPerElement=\"1\">") != std::string::npos);
   TEST_ASSERT(xml.find("<Attribute Name=\"status\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-                       "            <DataItem Dimensions=\"" + std::to_string(total) +
-                       "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">solution_c0000.h5:/contact/point/status</DataItem>") !=
+                       "            <DataItem Dimensions=\"" +
+                       std::to_string(total) +
+                       "\" NumberType=\"Int\" Precision=\"4\" "
+                       "Format=\"HDF\">solution_c0000.h5:/contact/point/status</DataItem>") !=
               std::string::npos);
-  TEST_ASSERT(xml.find("<Attribute Name=\"tangential_traction\" AttributeType=\"Vector\" Center=\"Node\">") !=
-              std::string::npos);
+  TEST_ASSERT(
+      xml.find(
+          "<Attribute Name=\"tangential_traction\" AttributeType=\"Vector\" Center=\"Node\">") !=
+      std::string::npos);
 }
 
 TEUCHOS_UNIT_TEST(XdmfWriter, UnwritableDirectoryThrowsNamingIt)
@@ -626,8 +614,7 @@ TEUCHOS_UNIT_TEST(XdmfWriter, UnwritableDirectoryThrowsNamingIt)
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const std::string base = freshDirectory(*comm, "xdmf_unwritable");
   const std::string regularFile = base + "/plain_file";
-  if (comm->getRank() == 0)
-    std::ofstream(regularFile) << "x\n";
+  if (comm->getRank() == 0) std::ofstream(regularFile) << "x\n";
   comm->barrier();
   for (const std::string& bad : {std::string("/proc/forbidden"), regularFile + "/out"}) {
     bool threw = false;
@@ -657,7 +644,8 @@ TEUCHOS_UNIT_TEST(XdmfWriter, NoRoomForTheFileIsFoundBeforeWriting)
   sc::io::XdmfWriter writer(comm, dir, "solution");
   const auto pieces = pieces2D(Mesh2D{200, 200}, comm->getRank(), comm->getSize());  // ~2.5 MB
 
-  struct sigaction ignore {}, previous {};
+  struct sigaction ignore {
+  }, previous{};
   ignore.sa_handler = SIG_IGN;
   sigaction(SIGXFSZ, &ignore, &previous);
   rlimit saved{};

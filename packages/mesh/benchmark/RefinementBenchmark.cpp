@@ -1,5 +1,5 @@
-// Refinement throughput (docs/mesh.md): uniform bisection of the half disc (2D) and the half ball (3D)
-// up to about --max-elements elements (default 10^6), printing for each level the elements
+// Refinement throughput (docs/mesh.md): uniform bisection of the half disc (2D) and the half ball
+// (3D) up to about --max-elements elements (default 10^6), printing for each level the elements
 // created per second by the bisection itself and including the rebuild of the mesh connectivity;
 // then a local-refinement run (elements around one boundary point).
 //   mesh_refinement_benchmark [--max-elements=N] [--dim=2|3|0]   (0 = both)
@@ -21,8 +21,8 @@ void run(const Teuchos::RCP<const Geometry>& g, double h0, long maxElements)
 {
   const int factor = g->dim() == 2 ? 4 : 8;
   BisectionRefiner r(GmshMeshIO::meshGeometry(*g, h0), g, true);
-  std::printf("%s (initial h = %g): %d elements, min angle %.3f deg\n", g->sceneName().c_str(),
-              h0, r.mesh()->numElements(), r.mesh()->minAngleDeg());
+  std::printf("%s (initial h = %g): %d elements, min angle %.3f deg\n", g->sceneName().c_str(), h0,
+              r.mesh()->numElements(), r.mesh()->minAngleDeg());
   std::printf("  %10s %10s %12s %12s %14s %14s\n", "elements", "vertices", "bisect [s]",
               "rebuild [s]", "created/s", "incl. rebuild");
   // Stop at the first level reaching maxElements, or before one that would exceed 2 x maxElements.
@@ -52,8 +52,10 @@ int main(int argc, char** argv)
   long maxElements = 1000000;
   int dim = 0;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strncmp(argv[i], "--max-elements=", 15)) maxElements = std::stol(argv[i] + 15);
-    else if (!std::strncmp(argv[i], "--dim=", 6)) dim = std::stoi(argv[i] + 6);
+    if (!std::strncmp(argv[i], "--max-elements=", 15))
+      maxElements = std::stol(argv[i] + 15);
+    else if (!std::strncmp(argv[i], "--dim=", 6))
+      dim = std::stoi(argv[i] + 6);
     else {
       std::fprintf(stderr, "usage: %s [--max-elements=N] [--dim=2|3|0]\n", argv[0]);
       return 2;

@@ -44,12 +44,14 @@ CircleFit circleFit(const SimplexMesh& m, const std::string& part, const std::ar
     for (int i = 0; i < m.dim(); ++i) {
       const double* x = m.vertex(v[i]);
       double r2 = 0;
-      for (int k = 0; k < m.dim(); ++k) r2 += (x[k] - c[k]) * (x[k] - c[k]);
+      for (int k = 0; k < m.dim(); ++k)
+        r2 += (x[k] - c[k]) * (x[k] - c[k]);
       fit.radialError = std::max(fit.radialError, std::abs(std::sqrt(r2) - R));
       for (int j = i + 1; j < m.dim(); ++j) {
         const double* y = m.vertex(v[j]);
         double l2 = 0;
-        for (int k = 0; k < m.dim(); ++k) l2 += (x[k] - y[k]) * (x[k] - y[k]);
+        for (int k = 0; k < m.dim(); ++k)
+          l2 += (x[k] - y[k]) * (x[k] - y[k]);
         fit.maxAngle = std::max(fit.maxAngle, 2 * std::asin(std::sqrt(l2) / (2 * R)));
       }
     }
@@ -81,7 +83,8 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, QuadraticFileRefinesOntoItsQuadraticArcs)
   const double theta0 = circleFit(*read.mesh, "Arc", {0, 1, 0}, 1.0).maxAngle;
   auto refiner = MeshFactory::build(meshList("Gmsh file", file), 2);
   double area0 = refiner->mesh()->measure();
-  for (int level = 0; level < 4; ++level) refiner->refineUniformly();
+  for (int level = 0; level < 4; ++level)
+    refiner->refineUniformly();
   const auto fit = circleFit(*refiner->mesh(), "Arc", {0, 1, 0}, 1.0);
   out << "initial arc angle " << theta0 << ", radial error after 4 levels " << fit.radialError
       << " (bound θ⁴/500 = " << std::pow(theta0, 4) / 500 << ")\n";
@@ -124,8 +127,8 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, QuadraticTetrahedraFileRefinesOntoItsPatches)
   refiner->refineUniformly();
   const auto fit = circleFit(*refiner->mesh(), "Cap", {0, 0, 1}, 1.0);
   out << "initial edge angle " << theta0 << ", radial error after 1 level " << fit.radialError
-      << " (chord midpoints: θ²/8 = " << theta0 * theta0 / 8 << ", bound θ⁴/100 = "
-      << std::pow(theta0, 4) / 100 << ")\n";
+      << " (chord midpoints: θ²/8 = " << theta0 * theta0 / 8
+      << ", bound θ⁴/100 = " << std::pow(theta0, 4) / 100 << ")\n";
   TEST_COMPARE(fit.radialError, <=, std::pow(theta0, 4) / 100);
   TEST_COMPARE(fit.radialError, <, 0.1 * theta0 * theta0 / 8);
 }
@@ -134,17 +137,21 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, QuadraticTetrahedraFileRefinesOntoItsPatches)
 // meet at 180/n degrees; the geometry says so (warning) and keeps the polygon.
 TEUCHOS_UNIT_TEST(CurvedBoundary, LinearFileWarnsThatItsBodyIsThePolygon)
 {
-  const auto read = GmshMeshIO::readMeshFile(std::string(SC_MESH_TEST_DATA) + "/half_disc_h0.25_v41.msh", 2);
+  const auto read =
+      GmshMeshIO::readMeshFile(std::string(SC_MESH_TEST_DATA) + "/half_disc_h0.25_v41.msh", 2);
   TEST_ASSERT(!read.boundary->quadratic());
   TEST_ASSERT(!read.boundary->isCurved("Arc"));
   int n = 0;
-  for (int f : read.mesh->boundaryFaces()) n += read.mesh->faceBoundaryId(f) == read.mesh->boundaryId("Arc");
+  for (int f : read.mesh->boundaryFaces())
+    n += read.mesh->faceBoundaryId(f) == read.mesh->boundaryId("Arc");
   const double kink = read.boundary->maxKinkAngleDegrees(read.mesh->boundaryId("Arc"));
-  out << n << " chords on the arc, largest kink " << kink << " degrees (uniform: " << 180.0 / n << ")\n";
+  out << n << " chords on the arc, largest kink " << kink << " degrees (uniform: " << 180.0 / n
+      << ")\n";
   TEST_FLOATING_EQUALITY(kink, 180.0 / n, 1e-3);  // Gmsh divides the arc uniformly
   TEST_EQUALITY(read.boundary->maxKinkAngleDegrees(read.mesh->boundaryId("Top")), 0.0);
   out << read.boundary->warning() << "\n";
-  TEST_ASSERT(contains(read.boundary->warning(), "is a linear mesh whose boundary part 'Arc' is not flat"));
+  TEST_ASSERT(
+      contains(read.boundary->warning(), "is a linear mesh whose boundary part 'Arc' is not flat"));
   TEST_ASSERT(contains(read.boundary->warning(), "the body is the polygon of the file"));
 }
 
@@ -152,11 +159,13 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, LinearFileWarnsThatItsBodyIsThePolygon)
 // do the curved elements' midpoints (Gmsh's closest point, to rounding).
 TEUCHOS_UNIT_TEST(CurvedBoundary, GmshGeometryPlacesNewVerticesOnTheCircle)
 {
-  auto refiner = MeshFactory::build(meshList("Gmsh geometry", inputDir + "/geometry/hertz_half_disc.geo"), 2);
+  auto refiner =
+      MeshFactory::build(meshList("Gmsh geometry", inputDir + "/geometry/hertz_half_disc.geo"), 2);
   TEST_ASSERT(refiner->mesh()->boundaryNames() == std::vector<std::string>({"Arc", "Top"}));
   TEST_ASSERT(refiner->geometry()->isCurved("Arc"));
   TEST_ASSERT(!refiner->geometry()->isCurved("Top"));
-  for (int level = 0; level < 3; ++level) refiner->refineUniformly();
+  for (int level = 0; level < 3; ++level)
+    refiner->refineUniformly();
   const auto fit = circleFit(*refiner->mesh(), "Arc", {0, 1, 0}, 1.0);
   out << "radial error after 3 levels: " << fit.radialError << "\n";
   TEST_COMPARE(fit.radialError, <, 1e-12);
@@ -174,7 +183,8 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, GmshGeometryPlacesNewVerticesOnTheCircle)
 // 3D: the OpenCASCADE half ball; new vertices on the cap lie on the unit sphere.
 TEUCHOS_UNIT_TEST(CurvedBoundary, GmshGeometryPlacesNewVerticesOnTheSphere)
 {
-  auto refiner = MeshFactory::build(meshList("Gmsh geometry", inputDir + "/geometry/hertz_half_ball.geo", 0.5), 3);
+  auto refiner = MeshFactory::build(
+      meshList("Gmsh geometry", inputDir + "/geometry/hertz_half_ball.geo", 0.5), 3);
   TEST_ASSERT(refiner->geometry()->isCurved("Cap"));
   TEST_ASSERT(!refiner->geometry()->isCurved("Top"));
   refiner->refineUniformly();
@@ -196,13 +206,15 @@ TEUCHOS_UNIT_TEST(CurvedBoundary, BadGeometriesNameTheFile)
   TEST_ASSERT(contains(syntax, "bad_geometry.geo' (Mesh/File) cannot be run by Gmsh"));
   const std::string noGroups = error("Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
                                      "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"
-                                     "Curve Loop(1) = {1,2,3}; Plane Surface(1) = {1};\n", 2);
+                                     "Curve Loop(1) = {1,2,3}; Plane Surface(1) = {1};\n",
+                                     2);
   out << noGroups << "\n";
   TEST_ASSERT(contains(noGroups, "has no physical group of dimension 1 (Physical Curve)"));
   const std::string wrongDim = error("Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
                                      "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"
                                      "Curve Loop(1) = {1,2,3}; Plane Surface(1) = {1};\n"
-                                     "Physical Curve(\"Edge\") = {1};\n", 3);
+                                     "Physical Curve(\"Edge\") = {1};\n",
+                                     3);
   TEST_ASSERT(contains(wrongDim, "defines a model of dimension 2 but Problem/Dimension = 3"));
   const std::string missing = sc::mesh::test::errorOf([] { CadGeometry g("no/such.geo", 2); });
   TEST_ASSERT(contains(missing, "no/such.geo' (Mesh/File) cannot be opened"));

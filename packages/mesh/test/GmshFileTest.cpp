@@ -34,7 +34,8 @@ void expectInputError(const std::function<void()>& f, const std::vector<std::str
     success = false;
   } catch (const sc::core::InputError& e) {
     out << "message: " << e.what() << "\n";
-    for (const auto& w : what) TEST_ASSERT(contains(e.what(), w));
+    for (const auto& w : what)
+      TEST_ASSERT(contains(e.what(), w));
   }
 }
 
@@ -89,7 +90,8 @@ TEUCHOS_UNIT_TEST(GmshFile, CorruptFilesNameTheFile)
   expectInputError([&] { GmshMeshIO::readFile(garbage, 2); }, {"garbage.msh"}, success, out);
   // Wrong dimension.
   expectInputError([] { GmshMeshIO::readFile(dataDir + "/half_disc_h0.25_v41.msh", 3); },
-                   {"half_disc_h0.25_v41.msh", "dimension 2", "Problem/Dimension = 3"}, success, out);
+                   {"half_disc_h0.25_v41.msh", "dimension 2", "Problem/Dimension = 3"}, success,
+                   out);
 }
 
 const char* kHeader = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
@@ -103,17 +105,21 @@ TEUCHOS_UNIT_TEST(GmshFile, UnsupportedAndInvalidElementsNameTheEntity)
   expectInputError([&] { GmshMeshIO::readFile(writeFile("quad.msh", quad), 2); },
                    {"quad.msh", "unsupported element type", "element 7"}, success, out);
   // A degenerate triangle.
-  std::string flat = std::string(kHeader) +
-                     "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 2 0 0\n$EndNodes\n"
-                     "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";
-  expectInputError([&] { GmshMeshIO::readFile(writeFile("flat.msh", flat), 2); },
-                   {"flat.msh", "degenerate element 1 (node 1 (0, 0), node 2 (1, 0), node 3 (2, 0))"}, success, out);
+  std::string flat = std::string(kHeader) + "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 2 0 0\n$EndNodes\n"
+                                            "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n";
+  expectInputError(
+      [&] { GmshMeshIO::readFile(writeFile("flat.msh", flat), 2); },
+      {"flat.msh", "degenerate element 1 (node 1 (0, 0), node 2 (1, 0), node 3 (2, 0))"}, success,
+      out);
   // Three triangles on one edge (non-conforming).
-  std::string fan = std::string(kHeader) +
-                    "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 2 0\n$EndNodes\n"
-                    "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 2 1 4\n3 2 2 1 1 1 2 5\n$EndElements\n";
+  std::string fan =
+      std::string(kHeader) +
+      "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 2 0\n$EndNodes\n"
+      "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 2 1 4\n3 2 2 1 1 1 2 5\n$EndElements\n";
   expectInputError([&] { GmshMeshIO::readFile(writeFile("fan.msh", fan), 2); },
-                   {"fan.msh", "edge (node 1 (0, 0), node 2 (1, 0)) is shared by more than two elements (element 1, element 2, element 3)"}, success, out);
+                   {"fan.msh", "edge (node 1 (0, 0), node 2 (1, 0)) is shared by more than two "
+                               "elements (element 1, element 2, element 3)"},
+                   success, out);
   // Folded: the second triangle lies on the same side of the shared edge 1-2 (an inverted
   // element in a mesh that would otherwise be conforming).
   std::string fold = std::string(kHeader) +
@@ -122,11 +128,13 @@ TEUCHOS_UNIT_TEST(GmshFile, UnsupportedAndInvalidElementsNameTheEntity)
   expectInputError([&] { GmshMeshIO::readFile(writeFile("fold.msh", fold), 2); },
                    {"fold.msh", "overlapping elements: element 1", "element 2"}, success, out);
   // Hanging node: node 5 in the middle of edge 1-2.
-  std::string hang = std::string(kHeader) +
-                     "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 0 0\n$EndNodes\n"
-                     "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 4 5\n3 2 2 1 1 5 4 2\n$EndElements\n";
+  std::string hang =
+      std::string(kHeader) +
+      "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0.5 1 0\n4 0.5 -1 0\n5 0.5 0 0\n$EndNodes\n"
+      "$Elements\n3\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 4 5\n3 2 2 1 1 5 4 2\n$EndElements\n";
   expectInputError([&] { GmshMeshIO::readFile(writeFile("hang.msh", hang), 2); },
-                   {"hang.msh", "hanging node: node 5 lies inside the edge (node 1, node 2)"}, success, out);
+                   {"hang.msh", "hanging node: node 5 lies inside the edge (node 1, node 2)"},
+                   success, out);
 }
 
 TEUCHOS_UNIT_TEST(GmshFile, NonFiniteCoordinatesNameTheNode)
@@ -185,19 +193,22 @@ TEUCHOS_UNIT_TEST(GmshFile, ScriptsInMeshFilesAreNeverRun)
   const fs::path marker = dir / "command_ran";
   const std::string call = "SystemCall \"touch " + marker.string() + "\";\n";
   // A script named .msh that would mesh a triangle after running the command.
-  const std::string script = call +
-      "Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {0, 1, 0, 0.5};\n"
-      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};\n"
-      "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\nMesh 2;\n";
+  const std::string script =
+      call + "Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {0, 1, 0, 0.5};\n"
+             "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};\n"
+             "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\nMesh 2;\n";
   const std::string evil = writeFile((dir / "evil.msh").string(), script);
   expectInputError([&] { GmshMeshIO::readFile(evil, 2); },
-                   {"evil.msh", "is not a Gmsh MSH file", "its first line is 'SystemCall"},
-                   success, out);
+                   {"evil.msh", "is not a Gmsh MSH file", "its first line is 'SystemCall"}, success,
+                   out);
   TEST_ASSERT(!fs::exists(marker));
   // The same after a comment line, and with a header that is not the first line.
-  expectInputError([&] { GmshMeshIO::readFile(writeFile((dir / "evil2.msh").string(),
-                                                        "// mesh\n$MeshFormat\n" + script), 2); },
-                   {"is not a Gmsh MSH file"}, success, out);
+  expectInputError(
+      [&] {
+        GmshMeshIO::readFile(
+            writeFile((dir / "evil2.msh").string(), "// mesh\n$MeshFormat\n" + script), 2);
+      },
+      {"is not a Gmsh MSH file"}, success, out);
   TEST_ASSERT(!fs::exists(marker));
   // A real mesh with an option file beside it: the mesh is read, the option file is not run.
   fs::copy_file(dataDir + "/half_disc_h0.25_v41.msh", dir / "good.msh");
@@ -213,7 +224,8 @@ TEUCHOS_UNIT_TEST(GmshFile, ScriptsInMeshFilesAreNeverRun)
   const std::string saved = oldTmp ? oldTmp : "";
   ::setenv("TMPDIR", tmp.c_str(), 1);
   GmshMeshIO::readFile((dir / "good.msh").string(), 2);
-  expectInputError([&] { GmshMeshIO::readFile(evil, 2); }, {"is not a Gmsh MSH file"}, success, out);
+  expectInputError([&] { GmshMeshIO::readFile(evil, 2); }, {"is not a Gmsh MSH file"}, success,
+                   out);
   if (oldTmp)
     ::setenv("TMPDIR", saved.c_str(), 1);
   else
@@ -225,12 +237,17 @@ TEUCHOS_UNIT_TEST(GmshFile, HeaderAndVersionAreChecked)
 {
   expectInputError([] { GmshMeshIO::readFile(writeFile("empty.msh", ""), 2); },
                    {"empty.msh", "the file is empty"}, success, out);
-  expectInputError([] { GmshMeshIO::readFile(writeFile("bom.msh", "\xEF\xBB\xBF" + std::string(kHeader)), 2); },
-                   {"bom.msh", "UTF-8 byte-order mark"}, success, out);
-  expectInputError([] { GmshMeshIO::readFile(writeFile("v1.msh", "$NOD\n3\n1 0 0 0\n$ENDNOD\n"), 2); },
-                   {"v1.msh", "its first line is '$NOD'"}, success, out);
-  expectInputError([] { GmshMeshIO::readFile(writeFile("v3.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n"), 2); },
-                   {"v3.msh", "MSH format version '3.0 0 8'"}, success, out);
+  expectInputError(
+      [] { GmshMeshIO::readFile(writeFile("bom.msh", "\xEF\xBB\xBF" + std::string(kHeader)), 2); },
+      {"bom.msh", "UTF-8 byte-order mark"}, success, out);
+  expectInputError(
+      [] { GmshMeshIO::readFile(writeFile("v1.msh", "$NOD\n3\n1 0 0 0\n$ENDNOD\n"), 2); },
+      {"v1.msh", "its first line is '$NOD'"}, success, out);
+  expectInputError(
+      [] {
+        GmshMeshIO::readFile(writeFile("v3.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n"), 2);
+      },
+      {"v3.msh", "MSH format version '3.0 0 8'"}, success, out);
   expectInputError([] { GmshMeshIO::readFile(writeFile("cut.msh", "$MeshFormat\n"), 2); },
                    {"cut.msh", "the $MeshFormat section is incomplete"}, success, out);
 }
@@ -244,8 +261,8 @@ TEUCHOS_UNIT_TEST(GmshFile, NonRegularFilesAreRefused)
   std::filesystem::remove(fifo);
   const int made = ::mkfifo(fifo.c_str(), 0600);
   TEST_EQUALITY(made, 0);
-  expectInputError([&] { GmshMeshIO::readFile(fifo, 2); }, {"mesh_fifo.msh", "is not a regular file"},
-                   success, out);
+  expectInputError([&] { GmshMeshIO::readFile(fifo, 2); },
+                   {"mesh_fifo.msh", "is not a regular file"}, success, out);
   std::filesystem::remove(fifo);
 }
 
@@ -255,15 +272,17 @@ TEUCHOS_UNIT_TEST(GmshFile, NonRegularFilesAreRefused)
 TEUCHOS_UNIT_TEST(GmshFile, ClashingPhysicalNamesAreInputErrors)
 {
   const std::string nodes = "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n";
-  std::string twice = std::string(kHeader) +
-                      "$PhysicalNames\n3\n1 1 \"Top\"\n1 2 \"Top\"\n2 9 \"Body\"\n$EndPhysicalNames\n" +
-                      nodes + "$Elements\n4\n1 1 2 1 1 1 2\n2 1 2 2 2 3 4\n3 2 2 9 1 1 2 3\n"
-                              "4 2 2 9 1 1 3 4\n$EndElements\n";
-  expectInputError([&] { GmshMeshIO::readFile(writeFile("names_twice.msh", twice), 2); },
-                   {"names_twice.msh", "physical groups 1 and 2 (dimension 1) are both named 'Top'"},
-                   success, out);
-  std::string clash = std::string(kHeader) +
-                      "$PhysicalNames\n1\n1 1 \"3\"\n$EndPhysicalNames\n" + nodes +
+  std::string twice =
+      std::string(kHeader) +
+      "$PhysicalNames\n3\n1 1 \"Top\"\n1 2 \"Top\"\n2 9 \"Body\"\n$EndPhysicalNames\n" + nodes +
+      "$Elements\n4\n1 1 2 1 1 1 2\n2 1 2 2 2 3 4\n3 2 2 9 1 1 2 3\n"
+      "4 2 2 9 1 1 3 4\n$EndElements\n";
+  expectInputError(
+      [&] { GmshMeshIO::readFile(writeFile("names_twice.msh", twice), 2); },
+      {"names_twice.msh", "physical groups 1 and 2 (dimension 1) are both named 'Top'"}, success,
+      out);
+  std::string clash = std::string(kHeader) + "$PhysicalNames\n1\n1 1 \"3\"\n$EndPhysicalNames\n" +
+                      nodes +
                       "$Elements\n4\n1 1 2 1 1 1 2\n2 1 2 3 2 3 4\n3 2 2 9 1 1 2 3\n"
                       "4 2 2 9 1 1 3 4\n$EndElements\n";
   expectInputError([&] { GmshMeshIO::readFile(writeFile("names_clash.msh", clash), 2); },

@@ -53,11 +53,11 @@ TEUCHOS_UNIT_TEST(MeshBodies, AVertexDoesNotJoin)
 // 3D: two tetrahedra sharing a face are one body; a third, apart, is another.
 TEUCHOS_UNIT_TEST(MeshBodies, Tetrahedra)
 {
-  std::vector<double> x = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1,   // 0-4: two, sharing 1-2-3
-                           5, 0, 0, 6, 0, 0, 5, 1, 0, 5, 0, 1};           // 5-8: one apart
+  std::vector<double> x = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1,  // 0-4: two, sharing 1-2-3
+                           5, 0, 0, 6, 0, 0, 5, 1, 0, 5, 0, 1};          // 5-8: one apart
   std::vector<int> t = {0, 1, 2, 3, 1, 2, 3, 4, 5, 6, 7, 8};
-  std::vector<int> bf = {0, 1, 2, 0, 1, 3, 0, 2, 3, 1, 2, 4, 1, 3, 4, 2, 3, 4,
-                         5, 6, 7, 5, 6, 8, 5, 7, 8, 6, 7, 8};
+  std::vector<int> bf = {0, 1, 2, 0, 1, 3, 0, 2, 3, 1, 2, 4, 1, 3, 4,
+                         2, 3, 4, 5, 6, 7, 5, 6, 8, 5, 7, 8, 6, 7, 8};
   std::vector<int> bp = {0, 0, 0, 1, 1, 1, 2, 2, 2, 2};
   const SimplexMesh m(3, x, t, bf, bp, {"A", "B", "C"}, "tetrahedra");
   const auto bodies = meshBodies(m);

@@ -17,9 +17,9 @@ using sc::mesh::test::errorOf;
 TEUCHOS_UNIT_TEST(MeshFactory, ValidParametersHaveDefaultsAndDocs)
 {
   auto valid = MeshFactory::getValidParameters();
-  for (const std::string key : {"Source", "Initial mesh size", "Uniform refinements",
-                                "Project boundary", "Radius", "File", "Lower corner",
-                                "Upper corner", "Memory limit (GB)", "Geometry order"}) {
+  for (const std::string key :
+       {"Source", "Initial mesh size", "Uniform refinements", "Project boundary", "Radius", "File",
+        "Lower corner", "Upper corner", "Memory limit (GB)", "Geometry order"}) {
     TEST_ASSERT(valid->isParameter(key));
     if (valid->isParameter(key)) TEST_ASSERT(!valid->getEntry(key).docString().empty());
   }
@@ -48,7 +48,8 @@ TEUCHOS_UNIT_TEST(MeshFactory, UnknownSourceListsTheChoices)
   p.set("Source", "Half disk");
   const std::string msg = errorOf([&] { MeshFactory::build(p, 2); });
   out << msg << "\n";
-  for (const auto& s : MeshFactory::sources()) TEST_ASSERT(contains(msg, s));
+  for (const auto& s : MeshFactory::sources())
+    TEST_ASSERT(contains(msg, s));
   TEST_ASSERT(contains(msg, "Mesh/Source"));
 }
 
@@ -86,7 +87,8 @@ TEUCHOS_UNIT_TEST(MeshFactory, BoxScenes)
   auto sq = MeshFactory::build(p, 2)->mesh();
   TEST_ASSERT(sq->boundaryNames() == std::vector<std::string>({"Left", "Right", "Bottom", "Top"}));
   TEST_FLOATING_EQUALITY(sq->measure(), 1.0, 1e-13);
-  for (const auto& n : sq->boundaryNames()) TEST_FLOATING_EQUALITY(sq->boundaryMeasure(n), 1.0, 1e-13);
+  for (const auto& n : sq->boundaryNames())
+    TEST_FLOATING_EQUALITY(sq->boundaryMeasure(n), 1.0, 1e-13);
 
   p.set("Source", "Rectangle");
   p.set("Lower corner", Teuchos::Array<double>(std::vector<double>{-1.0, 0.0}));
@@ -103,7 +105,8 @@ TEUCHOS_UNIT_TEST(MeshFactory, BoxScenes)
   TEST_ASSERT(cube->boundaryNames() ==
               std::vector<std::string>({"Left", "Right", "Front", "Back", "Bottom", "Top"}));
   TEST_FLOATING_EQUALITY(cube->measure(), 1.0, 1e-13);
-  for (const auto& n : cube->boundaryNames()) TEST_FLOATING_EQUALITY(cube->boundaryMeasure(n), 1.0, 1e-13);
+  for (const auto& n : cube->boundaryNames())
+    TEST_FLOATING_EQUALITY(cube->boundaryMeasure(n), 1.0, 1e-13);
   // Front is y = 0: its outward normal is -e_y.
   const int f = cube->boundaryFacesOf("Front").front();
   TEST_FLOATING_EQUALITY(cube->faceNormal(f)[1], -1.0, 1e-13);

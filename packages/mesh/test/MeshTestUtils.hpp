@@ -34,18 +34,22 @@ inline std::string conformityProblem(const SimplexMesh& m, bool allowUnnamed = f
 {
   std::vector<int> count(m.numFaces(), 0);
   for (int e = 0; e < m.numElements(); ++e)
-    for (int i = 0; i <= m.dim(); ++i) ++count[m.elementFaces(e)[i]];
+    for (int i = 0; i <= m.dim(); ++i)
+      ++count[m.elementFaces(e)[i]];
   long nb = 0;
   for (int f = 0; f < m.numFaces(); ++f) {
     const bool boundary = m.isBoundaryFace(f);
-    if (count[f] != (boundary ? 1 : 2)) return "face " + std::to_string(f) + " has " + std::to_string(count[f]) + " elements";
-    if (boundary != (m.faceBoundaryId(f) >= 0)) return "face " + std::to_string(f) + " boundary id mismatch";
+    if (count[f] != (boundary ? 1 : 2))
+      return "face " + std::to_string(f) + " has " + std::to_string(count[f]) + " elements";
+    if (boundary != (m.faceBoundaryId(f) >= 0))
+      return "face " + std::to_string(f) + " boundary id mismatch";
     nb += boundary;
   }
   if (nb != static_cast<long>(m.boundaryFaces().size())) return "boundary face count";
   // A hanging face would show up as an untagged boundary face.
   if (!allowUnnamed && m.hasBoundary("Unnamed")) return "untagged boundary faces (hanging faces?)";
-  if (m.eulerCharacteristic() != 1) return "Euler characteristic " + std::to_string(m.eulerCharacteristic());
+  if (m.eulerCharacteristic() != 1)
+    return "Euler characteristic " + std::to_string(m.eulerCharacteristic());
   return "";
 }
 
@@ -69,7 +73,8 @@ inline std::size_t similarityClasses(const SimplexMesh& m)
     auto a = m.elementAnglesDeg(e);
     std::sort(a.begin(), a.end());
     std::vector<long> key;
-    for (double x : a) key.push_back(std::lround(x * 1e4));
+    for (double x : a)
+      key.push_back(std::lround(x * 1e4));
     classes.insert(key);
   }
   return classes.size();

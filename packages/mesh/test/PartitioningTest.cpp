@@ -1,5 +1,5 @@
-// METIS partitions of a half-disc mesh of a few thousand elements: balance within 5% (docs/mesh.md),
-// identical on every rank, owned sets covering the mesh, and ghost layers holding
+// METIS partitions of a half-disc mesh of a few thousand elements: balance within 5%
+// (docs/mesh.md), identical on every rank, owned sets covering the mesh, and ghost layers holding
 // every face neighbour.
 #include <sc/mesh/BisectionRefiner.hpp>
 #include <sc/mesh/GmshMeshIO.hpp>
@@ -128,8 +128,7 @@ TEUCHOS_UNIT_TEST(Partitioning, VertexOwnershipInRankBlocks)
       for (std::size_t i = 0; i < o.owned.size(); ++i) {
         TEST_EQUALITY(lowest[o.owned[i]], rank);
         TEST_EQUALITY(o.number[o.owned[i]], blockStart[rank] + static_cast<long long>(i));
-        if (i > 0)
-          TEST_COMPARE(o.owned[i - 1], <, o.owned[i]);
+        if (i > 0) TEST_COMPARE(o.owned[i - 1], <, o.owned[i]);
       }
     }
   }

@@ -43,7 +43,8 @@ TEUCHOS_UNIT_TEST(Refinement, UniformHalfDiscMultipliesByFourAndStaysConforming)
     TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
     TEST_EQUALITY(r->mesh()->boundaryFacesOf("Top").size(), 2 * nTop);
     TEST_FLOATING_EQUALITY(r->mesh()->boundaryMeasure("Top"), top, 1e-13);  // flat: exact
-    for (int p = 0; p < ne; ++p) TEST_EQUALITY(step.childrenPtr[p + 1] - step.childrenPtr[p], 4);
+    for (int p = 0; p < ne; ++p)
+      TEST_EQUALITY(step.childrenPtr[p + 1] - step.childrenPtr[p], 4);
     // New vertices sit at edge midpoints (interior ones) or on the circle (Arc ones).
     for (std::size_t i = 0; i < step.newVertexParents.size(); ++i) {
       const auto [a, b] = step.newVertexParents[i];
@@ -89,7 +90,8 @@ TEUCHOS_UNIT_TEST(Refinement, HalfDiscMeasureConvergesAtRateTwo)
     if (level > 0) r->refineUniformly();
     h.push_back(0.4 / std::pow(2.0, level));
     err.push_back(std::abs(M_PI / 2 - r->mesh()->measure()));
-    out << "level " << level << " elements " << r->mesh()->numElements() << " error " << err.back() << "\n";
+    out << "level " << level << " elements " << r->mesh()->numElements() << " error " << err.back()
+        << "\n";
   }
   const double slope = fittedSlope(h, err);
   out << "fitted rate " << slope << "\n";
@@ -121,7 +123,8 @@ TEUCHOS_UNIT_TEST(Refinement, HalfBallMeasureConverges)
     }
     h.push_back(0.5 / std::pow(2.0, level));
     err.push_back(std::abs(2 * M_PI / 3 - r->mesh()->measure()));
-    out << "level " << level << " elements " << r->mesh()->numElements() << " error " << err.back() << "\n";
+    out << "level " << level << " elements " << r->mesh()->numElements() << " error " << err.back()
+        << "\n";
   }
   const double slope = fittedSlope(h, err);
   out << "fitted rate " << slope << "\n";
@@ -141,7 +144,8 @@ int nearestVertex(const SimplexMesh& m, const std::array<double, 3>& p)
   double bd = 1e300;
   for (int v = 0; v < m.numVertices(); ++v) {
     double d = 0;
-    for (int k = 0; k < m.dim(); ++k) d += std::pow(m.vertex(v)[k] - p[k], 2);
+    for (int k = 0; k < m.dim(); ++k)
+      d += std::pow(m.vertex(v)[k] - p[k], 2);
     if (d < bd) bd = d, best = v;
   }
   return best;
@@ -183,7 +187,8 @@ LocalRun localRefinementAtPoint(Teuchos::RCP<const Geometry> g, double h, int cy
     run.minAngle = std::min(run.minAngle, m.minAngleDeg());
     for (int e = 0; e < m.numElements(); ++e)
       if (r->generation(e) > 0)
-        for (double a : m.elementAnglesDeg(e)) run.minAngleRefined = std::min(run.minAngleRefined, a);
+        for (double a : m.elementAnglesDeg(e))
+          run.minAngleRefined = std::min(run.minAngleRefined, a);
     if (c == cycles / 2) run.classesMid = similarityClasses(m);
   }
   const auto& m = *r->mesh();
@@ -192,7 +197,8 @@ LocalRun localRefinementAtPoint(Teuchos::RCP<const Geometry> g, double h, int cy
   TEST_EQUALITY(conformityProblem(m), std::string());
   // The refined patch shrinks geometrically towards the point.
   double hmin = 1e300;
-  for (int e : elementsAround(m, v)) hmin = std::min(hmin, m.elementDiameter(e));
+  for (int e : elementsAround(m, v))
+    hmin = std::min(hmin, m.elementDiameter(e));
   TEST_COMPARE(hmin, <, h * std::pow(0.5, cycles / g->dim() - 1));
   out << (project ? "projected" : "straight") << ", " << cycles << " cycles: elements "
       << run.elements0 << " -> " << run.elements << ", min angle " << run.minAngle0 << " -> "
@@ -256,7 +262,8 @@ TEUCHOS_UNIT_TEST(Refinement, HistoryMapsChildrenToParents)
     bool onArc = false;
     for (int i = 0; i < 3; ++i) {
       const int f = before->elementFaces(p)[i];
-      onArc |= before->isBoundaryFace(f) && before->boundaryName(before->faceBoundaryId(f)) == "Arc";
+      onArc |=
+          before->isBoundaryFace(f) && before->boundaryName(before->faceBoundaryId(f)) == "Arc";
     }
     if (!onArc) TEST_FLOATING_EQUALITY(sum, before->elementMeasure(p), 1e-12);
   }
@@ -291,11 +298,13 @@ void randomRefinement(Teuchos::RCP<const Geometry> g, double h, int cycles, doub
       if (u(rng) < fraction) marked.push_back(e);
     const auto& step = r->refine(marked);
     TEST_EQUALITY(conformityProblem(*r->mesh()), std::string());
-    for (int e : marked) TEST_COMPARE(step.childrenPtr[e + 1] - step.childrenPtr[e], >=, 2);
+    for (int e : marked)
+      TEST_COMPARE(step.childrenPtr[e + 1] - step.childrenPtr[e], >=, 2);
     const auto& n = *r->mesh();
     for (int e = 0; e < n.numElements(); ++e)
       if (r->generation(e) > 0)
-        for (double a : n.elementAnglesDeg(e)) amin = std::min(amin, a);
+        for (double a : n.elementAnglesDeg(e))
+          amin = std::min(amin, a);
   }
   out << g->sceneName() << ": " << cycles << " random cycles -> " << r->mesh()->numElements()
       << " elements, min angle initial " << a0 << ", two uniform levels " << reference
@@ -337,7 +346,8 @@ TEUCHOS_UNIT_TEST(Refinement, KuhnCubeMeshBehavesLikeMaubachBisection)
   auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) x.insert(x.end(), {double(i), double(j), double(k)});
+      for (int i = 0; i <= n; ++i)
+        x.insert(x.end(), {double(i), double(j), double(k)});
   std::vector<int> t;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
@@ -355,7 +365,8 @@ TEUCHOS_UNIT_TEST(Refinement, KuhnCubeMeshBehavesLikeMaubachBisection)
   auto mesh = Teuchos::rcp(new SimplexMesh(3, x, t, {}, {}, {}, "Kuhn cubes"));
   BisectionRefiner r(mesh, Teuchos::null, false);
   std::vector<int> marked;
-  for (int e = 0; e < r.mesh()->numElements(); e += 7) marked.push_back(e);
+  for (int e = 0; e < r.mesh()->numElements(); e += 7)
+    marked.push_back(e);
   r.refine(marked);
   for (int level = 0; level < 2; ++level) {
     const int ne = r.mesh()->numElements();
@@ -366,13 +377,14 @@ TEUCHOS_UNIT_TEST(Refinement, KuhnCubeMeshBehavesLikeMaubachBisection)
   // More local steps: still conforming and the same classes.
   for (int cycle = 0; cycle < 3; ++cycle) {
     marked.clear();
-    for (int e = 0; e < r.mesh()->numElements(); e += 97) marked.push_back(e);
+    for (int e = 0; e < r.mesh()->numElements(); e += 97)
+      marked.push_back(e);
     r.refine(marked);
     TEST_EQUALITY(conformityProblem(*r.mesh(), true), std::string());
   }
   const auto classes = similarityClasses(*r.mesh());
-  out << r.mesh()->numElements() << " tetrahedra, " << classes << " similarity classes, min dihedral "
-      << r.mesh()->minAngleDeg() << "\n";
+  out << r.mesh()->numElements() << " tetrahedra, " << classes
+      << " similarity classes, min dihedral " << r.mesh()->minAngleDeg() << "\n";
   TEST_COMPARE(classes, <=, 3u);
   TEST_FLOATING_EQUALITY(r.mesh()->minAngleDeg(), 45.0, 1e-9);
   TEST_FLOATING_EQUALITY(r.mesh()->measure(), 27.0, 1e-12);
@@ -387,8 +399,9 @@ TEUCHOS_UNIT_TEST(Refinement, SplitBoundaryTetrahedraStayAbsent)
   auto initial = GmshMeshIO::meshGeometry(*g, 0.4);
   const auto before = initial->elementsWithAllVerticesOnBoundary().size();
   auto split = splitElementsWithAllVerticesOnBoundary(*initial);
-  out << before << " of " << initial->numElements() << " tetrahedra had all vertices on the boundary; "
-      << split->numElements() << " after splitting, min dihedral " << initial->minAngleDeg() << " -> "
+  out << before << " of " << initial->numElements()
+      << " tetrahedra had all vertices on the boundary; " << split->numElements()
+      << " after splitting, min dihedral " << initial->minAngleDeg() << " -> "
       << split->minAngleDeg() << "\n";
   TEST_COMPARE(before, >, 0u);
   TEST_EQUALITY(split->numElements(), initial->numElements() + 3 * static_cast<int>(before));
@@ -400,7 +413,8 @@ TEUCHOS_UNIT_TEST(Refinement, SplitBoundaryTetrahedraStayAbsent)
   TEST_EQUALITY(r.mesh()->elementsWithAllVerticesOnBoundary().size(), 0u);
   for (int c = 0; c < 4; ++c) {
     std::vector<int> marked;
-    for (int e = 0; e < r.mesh()->numElements(); e += 5) marked.push_back(e);
+    for (int e = 0; e < r.mesh()->numElements(); e += 5)
+      marked.push_back(e);
     r.refine(marked);
     TEST_EQUALITY(r.mesh()->elementsWithAllVerticesOnBoundary().size(), 0u);
     TEST_EQUALITY(conformityProblem(*r.mesh()), std::string());
@@ -470,11 +484,13 @@ TEUCHOS_UNIT_TEST(Refinement, InconsistentStateIsAnInputError)
   auto r = makeRefiner(Teuchos::rcp(new HalfDiscGeometry(1.0)), 0.3, true);
   auto s = r->state();
   s.elementVertices.back() = static_cast<int>(s.coordinates.size());  // no such vertex
-  TEST_ASSERT(contains(errorOf([&] { r->restore(s, "checkpoint 'x.h5'"); }),
-                       "checkpoint 'x.h5': the refinement state is inconsistent: an element vertex out of range"));
+  TEST_ASSERT(contains(
+      errorOf([&] { r->restore(s, "checkpoint 'x.h5'"); }),
+      "checkpoint 'x.h5': the refinement state is inconsistent: an element vertex out of range"));
   s = r->state();
   s.generations.pop_back();
-  TEST_ASSERT(contains(errorOf([&] { r->restore(s, "c"); }), "per-element arrays of the wrong length"));
+  TEST_ASSERT(
+      contains(errorOf([&] { r->restore(s, "c"); }), "per-element arrays of the wrong length"));
   s = r->state();
   s.dim = 3;
   TEST_ASSERT(contains(errorOf([&] { r->restore(s, "c"); }), "dimension 3"));

@@ -1,7 +1,7 @@
 // Transfers with the refinement history. References: a linear function is reproduced exactly by
 // midpoint interpolation (analytic), element-wise constants keep their integral when refinement
-// does not move the boundary (straight boundaries), and parent boundary faces contain their children
-// (checked by part id and, with straight boundaries, by measure).
+// does not move the boundary (straight boundaries), and parent boundary faces contain their
+// children (checked by part id and, with straight boundaries, by measure).
 #include "MeshTestUtils.hpp"
 
 #include <sc/mesh/BisectionRefiner.hpp>
@@ -16,10 +16,13 @@ namespace {
 
 using namespace sc::mesh;
 
-double linear(const double* x, int d) { return 1.0 + 2.0 * x[0] - 3.0 * x[1] + (d == 3 ? 0.5 * x[2] : 0.0); }
+double linear(const double* x, int d)
+{
+  return 1.0 + 2.0 * x[0] - 3.0 * x[1] + (d == 3 ? 0.5 * x[2] : 0.0);
+}
 
-void checkTransfers(Teuchos::RCP<const Geometry> g, double h, bool project, Teuchos::FancyOStream& out,
-                    bool& success)
+void checkTransfers(Teuchos::RCP<const Geometry> g, double h, bool project,
+                    Teuchos::FancyOStream& out, bool& success)
 {
   BisectionRefiner r(GmshMeshIO::meshGeometry(*g, h), g, project);
   for (int cycle = 0; cycle < 3; ++cycle) {
@@ -27,7 +30,8 @@ void checkTransfers(Teuchos::RCP<const Geometry> g, double h, bool project, Teuc
     const int d = before->dim();
     // Mark every third element, then once uniformly: both kinds of steps.
     std::vector<int> marked;
-    for (int e = 0; e < before->numElements(); e += 3) marked.push_back(e);
+    for (int e = 0; e < before->numElements(); e += 3)
+      marked.push_back(e);
     const auto& step = cycle == 1 ? r.refineUniformly() : r.refine(marked);
     const auto& after = *r.mesh();
 
@@ -62,7 +66,8 @@ void checkTransfers(Teuchos::RCP<const Geometry> g, double h, bool project, Teuc
       integral0 += c[e] * before->elementMeasure(e);
     }
     const auto c1 = prolongElementField(step, c);
-    for (int e = 0; e < after.numElements(); ++e) integral1 += c1[e] * after.elementMeasure(e);
+    for (int e = 0; e < after.numElements(); ++e)
+      integral1 += c1[e] * after.elementMeasure(e);
     if (!project) TEST_FLOATING_EQUALITY(integral1, integral0, 1e-12);
 
     // Boundary faces: parent on the same part; children's measures add up to the parent's.
@@ -76,7 +81,8 @@ void checkTransfers(Teuchos::RCP<const Geometry> g, double h, bool project, Teuc
       childMeasure[p] += after.faceMeasure(f2);
     }
     if (!project)
-      for (int p : before->boundaryFaces()) TEST_FLOATING_EQUALITY(childMeasure[p], before->faceMeasure(p), 1e-12);
+      for (int p : before->boundaryFaces())
+        TEST_FLOATING_EQUALITY(childMeasure[p], before->faceMeasure(p), 1e-12);
     out << g->sceneName() << (project ? " (projected)" : " (straight)") << " step " << cycle << ": "
         << before->numElements() << " -> " << after.numElements() << " elements, ok\n";
   }

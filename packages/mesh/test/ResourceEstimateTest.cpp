@@ -33,19 +33,24 @@ bool withinFactor2(double measured, double estimated)
 
 TEUCHOS_UNIT_TEST(MeshResources, InitialEstimateMatchesGmsh)
 {
-  struct Case { std::string source; int dim; double h; };
+  struct Case {
+    std::string source;
+    int dim;
+    double h;
+  };
   const std::vector<Case> cases = {
-      {"Half disc", 2, 0.25}, {"Half disc", 2, 0.1},   {"Half disc", 2, 0.05},
-      {"Half disc", 2, 0.02}, {"Unit square", 2, 0.25}, {"Unit square", 2, 0.1},
-      {"Unit square", 2, 0.05}, {"Rectangle", 2, 0.1},  {"Half ball", 3, 0.5},
-      {"Half ball", 3, 0.25}, {"Half ball", 3, 0.15},   {"Half ball", 3, 0.1},
-      {"Unit cube", 3, 0.5},  {"Unit cube", 3, 0.25},   {"Unit cube", 3, 0.15},
+      {"Half disc", 2, 0.25},   {"Half disc", 2, 0.1},    {"Half disc", 2, 0.05},
+      {"Half disc", 2, 0.02},   {"Unit square", 2, 0.25}, {"Unit square", 2, 0.1},
+      {"Unit square", 2, 0.05}, {"Rectangle", 2, 0.1},    {"Half ball", 3, 0.5},
+      {"Half ball", 3, 0.25},   {"Half ball", 3, 0.15},   {"Half ball", 3, 0.1},
+      {"Unit cube", 3, 0.5},    {"Unit cube", 3, 0.25},   {"Unit cube", 3, 0.15},
       {"Unit cube", 3, 0.1}};
   out << std::setw(12) << "scene" << std::setw(7) << "h" << std::setw(10) << "measured"
       << std::setw(11) << "estimated" << std::setw(7) << "ratio\n";
   for (const auto& c : cases) {
     Teuchos::ParameterList p = scene(c.source, c.h);
-    if (c.source == "Rectangle") p.set("Upper corner", Teuchos::Array<double>(std::vector<double>{2.0, 0.5}));
+    if (c.source == "Rectangle")
+      p.set("Upper corner", Teuchos::Array<double>(std::vector<double>{2.0, 0.5}));
     const double estimated = MeshFactory::estimateInitialElements(p, c.dim);
     const double measured = MeshFactory::build(p, c.dim)->mesh()->numElements();
     out << std::setw(12) << c.source << std::setw(7) << c.h << std::setw(10) << measured
@@ -60,24 +65,31 @@ TEUCHOS_UNIT_TEST(MeshResources, InitialEstimateMatchesGmsh)
 
 TEUCHOS_UNIT_TEST(MeshResources, RefinementEstimateMatchesTheRefiner)
 {
-  struct Case { std::string source; int dim; double h; int uniform; int levels;
-                std::vector<double> center; double radius; std::string boundary; };
-  const std::vector<Case> cases = {
-      {"Half disc", 2, 0.25, 3, 0, {}, 0.25, ""},
-      {"Half ball", 3, 0.5, 1, 0, {}, 0.25, ""},
-      // the Hertz 2D test's local sweeps at (0, 0), and more
-      {"Half disc", 2, 0.1, 0, 2, {0, 0}, 0.25, ""},
-      {"Half disc", 2, 0.1, 0, 6, {0, 0}, 0.25, ""},
-      {"Half disc", 2, 0.1, 0, 10, {0, 0}, 0.25, ""},
-      {"Half disc", 2, 0.1, 1, 4, {0, 0}, 0.25, ""},
-      {"Half disc", 2, 0.1, 0, 6, {0, 0}, 0.25, "Arc"},
-      {"Half disc", 2, 0.1, 0, 12, {0, 0}, 0.25, "Arc"},
-      // input/hertz3d.xml (9 sweeps along the Cap), and more
-      {"Half ball", 3, 0.25, 0, 3, {0, 0, 0}, 0.22, "Cap"},
-      {"Half ball", 3, 0.25, 0, 9, {0, 0, 0}, 0.22, "Cap"},
-      {"Half ball", 3, 0.25, 0, 12, {0, 0, 0}, 0.22, "Cap"},
-      {"Half ball", 3, 0.25, 0, 3, {0, 0, 0}, 0.22, ""},
-      {"Half ball", 3, 0.25, 0, 6, {0, 0, 0}, 0.22, ""}};
+  struct Case {
+    std::string source;
+    int dim;
+    double h;
+    int uniform;
+    int levels;
+    std::vector<double> center;
+    double radius;
+    std::string boundary;
+  };
+  const std::vector<Case> cases = {{"Half disc", 2, 0.25, 3, 0, {}, 0.25, ""},
+                                   {"Half ball", 3, 0.5, 1, 0, {}, 0.25, ""},
+                                   // the Hertz 2D test's local sweeps at (0, 0), and more
+                                   {"Half disc", 2, 0.1, 0, 2, {0, 0}, 0.25, ""},
+                                   {"Half disc", 2, 0.1, 0, 6, {0, 0}, 0.25, ""},
+                                   {"Half disc", 2, 0.1, 0, 10, {0, 0}, 0.25, ""},
+                                   {"Half disc", 2, 0.1, 1, 4, {0, 0}, 0.25, ""},
+                                   {"Half disc", 2, 0.1, 0, 6, {0, 0}, 0.25, "Arc"},
+                                   {"Half disc", 2, 0.1, 0, 12, {0, 0}, 0.25, "Arc"},
+                                   // input/hertz3d.xml (9 sweeps along the Cap), and more
+                                   {"Half ball", 3, 0.25, 0, 3, {0, 0, 0}, 0.22, "Cap"},
+                                   {"Half ball", 3, 0.25, 0, 9, {0, 0, 0}, 0.22, "Cap"},
+                                   {"Half ball", 3, 0.25, 0, 12, {0, 0, 0}, 0.22, "Cap"},
+                                   {"Half ball", 3, 0.25, 0, 3, {0, 0, 0}, 0.22, ""},
+                                   {"Half ball", 3, 0.25, 0, 6, {0, 0, 0}, 0.22, ""}};
   out << std::setw(10) << "scene" << std::setw(6) << "h" << std::setw(4) << "U" << std::setw(4)
       << "L" << std::setw(10) << "boundary" << std::setw(10) << "measured" << std::setw(11)
       << "estimated" << std::setw(7) << "ratio\n";
@@ -171,7 +183,8 @@ TEUCHOS_UNIT_TEST(MeshResources, TooLargeMeshesAreRefusedBeforeTheyAreMade)
   const auto limit = makeResourceLimit(1.0, 2, 1, 1, 2000000, 0.0, "");
   const auto start = std::chrono::steady_clock::now();
   {
-    const std::string msg = errorOf([&] { MeshFactory::build(scene("Half disc", 1e-6), 2, false, limit); });
+    const std::string msg =
+        errorOf([&] { MeshFactory::build(scene("Half disc", 1e-6), 2, false, limit); });
     out << msg << "\n";
     TEST_ASSERT(contains(msg, "'Mesh/Initial mesh size' = 1e-06 is too small"));
     TEST_ASSERT(contains(msg, "triangles") && contains(msg, "DOFs") && contains(msg, "GB"));
@@ -180,8 +193,10 @@ TEUCHOS_UNIT_TEST(MeshResources, TooLargeMeshesAreRefusedBeforeTheyAreMade)
   }
   {
     const auto l3 = makeResourceLimit(1.0, 3, 1, 1, 0, 0.0, "");
-    const std::string msg = errorOf([&] { MeshFactory::build(scene("Half ball", 1e-3), 3, false, l3); });
-    TEST_ASSERT(contains(msg, "'Mesh/Initial mesh size' = 0.001 is too small") && contains(msg, "tetrahedra"));
+    const std::string msg =
+        errorOf([&] { MeshFactory::build(scene("Half ball", 1e-3), 3, false, l3); });
+    TEST_ASSERT(contains(msg, "'Mesh/Initial mesh size' = 0.001 is too small") &&
+                contains(msg, "tetrahedra"));
   }
   {
     Teuchos::ParameterList p = scene("Half disc", 0.25);
@@ -194,7 +209,8 @@ TEUCHOS_UNIT_TEST(MeshResources, TooLargeMeshesAreRefusedBeforeTheyAreMade)
   {
     Teuchos::ParameterList p = scene("Half disc", 0.1);
     p.sublist("Local refinement").set("Levels", 40);
-    p.sublist("Local refinement").set("Center", Teuchos::Array<double>(std::vector<double>{0.0, 0.0}));
+    p.sublist("Local refinement")
+        .set("Center", Teuchos::Array<double>(std::vector<double>{0.0, 0.0}));
     const std::string msg = errorOf([&] { MeshFactory::build(p, 2, false, limit); });
     out << msg << "\n";
     TEST_ASSERT(contains(msg, "'Mesh/Local refinement/Levels' = 40 is too many"));

@@ -24,7 +24,8 @@ Teuchos::RCP<SimplexMesh> unitSquare()
   std::vector<int> t = {0, 1, 2, /*clockwise:*/ 0, 2, 3};
   std::vector<int> bf = {0, 1, 1, 2, 2, 3, 3, 0};
   std::vector<int> bp = {0, 1, 2, 3};
-  return Teuchos::rcp(new SimplexMesh(2, x, t, bf, bp, {"Bottom", "Right", "Top", "Left"}, "square"));
+  return Teuchos::rcp(
+      new SimplexMesh(2, x, t, bf, bp, {"Bottom", "Right", "Top", "Left"}, "square"));
 }
 
 TEUCHOS_UNIT_TEST(SimplexMesh, SquareConnectivityAndGeometry)
@@ -34,8 +35,8 @@ TEUCHOS_UNIT_TEST(SimplexMesh, SquareConnectivityAndGeometry)
   TEST_EQUALITY(m->numElements(), 2);
   TEST_EQUALITY(m->numFaces(), 5);
   TEST_EQUALITY(static_cast<int>(m->boundaryFaces().size()), 4);
-  TEST_FLOATING_EQUALITY(m->measure(), 1.0, 1e-14);                // analytic
-  TEST_FLOATING_EQUALITY(m->minAngleDeg(), 45.0, 1e-12);           // analytic
+  TEST_FLOATING_EQUALITY(m->measure(), 1.0, 1e-14);       // analytic
+  TEST_FLOATING_EQUALITY(m->minAngleDeg(), 45.0, 1e-12);  // analytic
   TEST_FLOATING_EQUALITY(m->elementDiameter(0), std::sqrt(2.0), 1e-14);
   TEST_EQUALITY(m->eulerCharacteristic(), 1L);
   // Every element positively oriented after construction (second one was clockwise).
@@ -83,7 +84,7 @@ TEUCHOS_UNIT_TEST(SimplexMesh, UnknownBoundaryNameListsValidNames)
 TEUCHOS_UNIT_TEST(SimplexMesh, SingleTetrahedron)
 {
   std::vector<double> x = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-  SimplexMesh m(3, x, {0, 2, 1, 3}, {}, {}, {}, "tet");  // negative order on purpose
+  SimplexMesh m(3, x, {0, 2, 1, 3}, {}, {}, {}, "tet");   // negative order on purpose
   TEST_FLOATING_EQUALITY(m.measure(), 1.0 / 6.0, 1e-14);  // analytic
   TEST_EQUALITY(m.numFaces(), 4);
   TEST_EQUALITY(m.boundaryNames().size(), 1u);  // all faces untagged -> "Unnamed"
@@ -124,8 +125,11 @@ TEUCHOS_UNIT_TEST(SimplexMesh, BadMeshesAreInputErrors)
       },
       "hanging node: vertex 4", success, out);
   // Degenerate (collinear) triangle.
-  expectInputError([] { SimplexMesh(2, {0, 0, 1, 0, 2, 0}, {0, 1, 2}, {}, {}, {}, "flat"); },
-                   "degenerate", success, out);
+  expectInputError(
+      [] {
+        SimplexMesh(2, {0, 0, 1, 0, 2, 0}, {0, 1, 2}, {}, {}, {}, "flat");
+      },
+      "degenerate", success, out);
   // Folded: both triangles on the same side of edge 0-1.
   expectInputError(
       [] {
@@ -134,7 +138,9 @@ TEUCHOS_UNIT_TEST(SimplexMesh, BadMeshesAreInputErrors)
       "overlapping", success, out);
   // Tagged face that is interior.
   expectInputError(
-      [] { SimplexMesh(2, {0, 0, 1, 0, 1, 1, 0, 1}, {0, 1, 2, 0, 2, 3}, {0, 2}, {0}, {"Diag"}, "diag"); },
+      [] {
+        SimplexMesh(2, {0, 0, 1, 0, 1, 1, 0, 1}, {0, 1, 2, 0, 2, 3}, {0, 2}, {0}, {"Diag"}, "diag");
+      },
       "not a boundary face", success, out);
 }
 
@@ -151,7 +157,8 @@ TEUCHOS_UNIT_TEST(SimplexMesh, ShardsSideAndEdgeNumbering)
   const int sides[4][3] = {{0, 1, 3}, {1, 2, 3}, {0, 2, 3}, {0, 1, 2}};  // sorted
   for (int s = 0; s < 4; ++s) {
     const int* fv = m.faceVertices(m.sideFace(0, s));
-    for (int k = 0; k < 3; ++k) TEST_EQUALITY(fv[k], sides[s][k]);
+    for (int k = 0; k < 3; ++k)
+      TEST_EQUALITY(fv[k], sides[s][k]);
   }
   const int edges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};  // sorted
   TEST_EQUALITY(m.numEdges(), 6);

@@ -43,7 +43,8 @@ std::vector<std::string> split(const std::string& s)
 {
   std::vector<std::string> out;
   std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');) out.push_back(item);
+  for (std::string item; std::getline(ss, item, ',');)
+    out.push_back(item);
   return out;
 }
 
@@ -100,22 +101,29 @@ int main(int argc, char* argv[])
       const std::string k = std::string(key) + "=";
       return a.rfind(k, 0) == 0 ? a.substr(k.size()) : std::string();
     };
-    if (!value("--max-dofs").empty()) maxDofs = std::atoll(value("--max-dofs").c_str());
+    if (!value("--max-dofs").empty())
+      maxDofs = std::atoll(value("--max-dofs").c_str());
     else if (!value("--max-klu2-dofs").empty())
       maxKluDofs = std::atoll(value("--max-klu2-dofs").c_str());
-    else if (!value("--problems").empty()) problems = split(value("--problems"));
-    else if (!value("--solvers").empty()) solvers = split(value("--solvers"));
-    else if (!value("--ordering").empty()) ordering = value("--ordering");
-    else if (a == "--no-equilibrate") equilibrate = false;
-    else if (a == "--general") general = true;
+    else if (!value("--problems").empty())
+      problems = split(value("--problems"));
+    else if (!value("--solvers").empty())
+      solvers = split(value("--solvers"));
+    else if (!value("--ordering").empty())
+      ordering = value("--ordering");
+    else if (a == "--no-equilibrate")
+      equilibrate = false;
+    else if (a == "--general")
+      general = true;
     else if (a == "--print-parameters") {
-      if (root) sc::core::printParameterDocumentation(*LinearSolverFactory::getValidParameters(),
-                                                       std::cout);
+      if (root)
+        sc::core::printParameterDocumentation(*LinearSolverFactory::getValidParameters(),
+                                              std::cout);
       return 0;
-    }
-    else {
-      if (root) std::cerr << "solvers_benchmark: unknown argument '" << a << "' (see the source "
-                          << "header for the options)\n";
+    } else {
+      if (root)
+        std::cerr << "solvers_benchmark: unknown argument '" << a << "' (see the source "
+                  << "header for the options)\n";
       return 2;
     }
   }
@@ -177,12 +185,11 @@ int main(int argc, char* argv[])
                         first.equilibrationSeconds, first.symbolicSeconds, first.numericSeconds,
                         first.solveSeconds, second.numericSeconds,
                         static_cast<double>(p->dofs(n)) / total, first.factorNonzeros, mem,
-                        first.mumpsMemoryMaxMB, first.mumpsMemoryTotalMB,
-                        first.relativeResidual);
+                        first.mumpsMemoryMaxMB, first.mumpsMemoryTotalMB, first.relativeResidual);
         } catch (const sc::core::Error& e) {
           if (root)
-            std::printf("%-10s %-6s %9lld  failed: %s\n", pname.c_str(), type.c_str(),
-                        p->dofs(n), e.what());
+            std::printf("%-10s %-6s %9lld  failed: %s\n", pname.c_str(), type.c_str(), p->dofs(n),
+                        e.what());
         }
         std::fflush(stdout);
       }

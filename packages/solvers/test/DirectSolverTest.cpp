@@ -65,8 +65,8 @@ double solveManufactured(DirectSolver& solver, const Teuchos::RCP<const CrsMatri
   return relativeError(*solveFor(solver, A, *xExact), *xExact);
 }
 
-const int kPoissonN = 30;     // 900 unknowns
-const int kSaddleN = 16;      // 256 + 128 unknowns
+const int kPoissonN = 30;  // 900 unknowns
+const int kSaddleN = 16;   // 256 + 128 unknowns
 const long long kSaddleNu = static_cast<long long>(kSaddleN) * kSaddleN;
 const double kScaleM = 1e-8;  // compliance-like block ~ 1/E
 const double kScaleB = 1e4;   // divergence-like block
@@ -199,8 +199,7 @@ TEUCHOS_UNIT_TEST(RuizEquilibration, SaddlePointNorms)
   double gMax = 0.0, gMin = 0.0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, localMax, Teuchos::outArg(gMax));
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, localMin, Teuchos::outArg(gMin));
-  out << "row norms in [" << gMin << ", " << gMax << "] after " << ruiz.iterations()
-      << " sweeps\n";
+  out << "row norms in [" << gMin << ", " << gMax << "] after " << ruiz.iterations() << " sweeps\n";
   TEST_COMPARE(gMax, <=, 2.2);
   TEST_COMPARE(gMin, >=, 1.0 / 2.2);
   auto dr = ruiz.rowScaling().getData(0);
@@ -247,7 +246,8 @@ TEUCHOS_UNIT_TEST(DirectSolver, SymbolicReuse)
     const double e4 = solveManufactured(*solver, A4);
     {
       const auto lcl = A4->getLocalMatrixHost();
-      for (size_t k = 0; k < lcl.values.extent(0); ++k) lcl.values(k) *= 3.0;
+      for (size_t k = 0; k < lcl.values.extent(0); ++k)
+        lcl.values(k) *= 3.0;
     }
     const double e5 = solveManufactured(*solver, A4);
     TEST_COMPARE(e4, <=, 1e-10);

@@ -1,9 +1,11 @@
-// The Krylov solver with the block-diagonal preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §"Linear solvers",
-// docs/solvers.md) on the manufactured elasticity problems of docs/verification.md:
+// The Krylov solver with the block-diagonal preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md
+// §"Linear solvers", docs/solvers.md) on the manufactured elasticity problems of
+// docs/verification.md:
 //  - iteration counts to a 1e-8 relative residual (the true one) stay within 1.5× over refinement
-//    levels and ν ∈ {0.3, 0.49, 0.4999, 0.5}: the acceptance bound of docs/solvers.md. Measured when
-//    written (HRZ-lumped θ block): 45–58 (2D, 767–11777 DOFs), 67–77 (3D, 4452–33720 DOFs);
-//    the design notes' (docs/theory.md §"Linear solvers") prototype saw 21–36 with exact blocks, on the preconditioned residual;
+//    levels and ν ∈ {0.3, 0.49, 0.4999, 0.5}: the acceptance bound of docs/solvers.md. Measured
+//    when written (HRZ-lumped θ block): 45–58 (2D, 767–11777 DOFs), 67–77 (3D, 4452–33720 DOFs);
+//    the design notes' (docs/theory.md §"Linear solvers") prototype saw 21–36 with exact blocks, on
+//    the preconditioned residual;
 //  - the solution agrees with MUMPS' to the solver tolerance, at every rank count this test runs;
 //  - non-convergence and unavailable components are clear errors.
 #include <algorithm>
@@ -73,8 +75,9 @@ void checkRobustness(int dim, int levels, Teuchos::FancyOStream& out, bool& succ
   for (double nu : {0.3, 0.49, 0.4999, 0.5}) {
     const auto run = solve(iterativeSetup(dim, levels, nu));
     for (const auto& l : run.levels) {
-      out << dim << "D nu = " << std::setprecision(6) << nu << ", " << l.dofs << " DOFs: " << l.iterations
-          << " MINRES iterations, relative residual " << l.relativeResidual << "\n";
+      out << dim << "D nu = " << std::setprecision(6) << nu << ", " << l.dofs
+          << " DOFs: " << l.iterations << " MINRES iterations, relative residual "
+          << l.relativeResidual << "\n";
       TEST_COMPARE(l.relativeResidual, <=, 1e-8);
       lo = std::min(lo, l.iterations);
       hi = std::max(hi, l.iterations);
@@ -98,8 +101,7 @@ void checkMultigrid(int dim, int levels, Teuchos::FancyOStream& out, bool& succe
   int lo = 1 << 30, hi = 0;
   for (double nu : {0.3, 0.5}) {  // the exact-block tests cover 0.49 and 0.4999 (test time)
     auto s = iterativeSetup(dim, levels, nu);
-    if (dim == 3)
-      s.meshSize = 1.0;
+    if (dim == 3) s.meshSize = 1.0;
     s.multigrid = true;
     s.solverOptions.sublist("Iterative").set("Stress block", std::string("Multigrid"));
     const auto run = solve(s);

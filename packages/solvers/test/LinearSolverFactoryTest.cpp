@@ -80,13 +80,13 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, AutoPolicy)
     return sc::solvers::resolveAutoType(sc::solvers::LinearSolverFactory::validate(pl), p)
         .get<std::string>("Type");
   };
-  TEST_EQUALITY(typeFor({2, 10 * big, 1, false, true}), "MUMPS");     // 2D: MUMPS is faster
-  TEST_EQUALITY(typeFor({3, big - 1, 1, false, true}), "MUMPS");      // below the threshold
-  TEST_EQUALITY(typeFor({3, big, 4, true, true}), "MUMPS");           // contact
-  TEST_EQUALITY(typeFor({3, big, 2, false, false}), "MUMPS");         // no hierarchy
+  TEST_EQUALITY(typeFor({2, 10 * big, 1, false, true}), "MUMPS");  // 2D: MUMPS is faster
+  TEST_EQUALITY(typeFor({3, big - 1, 1, false, true}), "MUMPS");   // below the threshold
+  TEST_EQUALITY(typeFor({3, big, 4, true, true}), "MUMPS");        // contact
+  TEST_EQUALITY(typeFor({3, big, 2, false, false}), "MUMPS");      // no hierarchy
   TEST_EQUALITY(typeFor({3, big, 2, false, true}), "Iterative");
   const auto resolved = sc::solvers::resolveAutoType(sc::solvers::LinearSolverFactory::validate(pl),
-                                                      {3, big, 1, false, true});
+                                                     {3, big, 1, false, true});
   TEST_EQUALITY(resolved.sublist("Iterative").get<std::string>("Stress block"), "Multigrid");
   auto solver = sc::solvers::createLinearSolver(pl, {3, big, 1, false, true});
   TEST_ASSERT(solver->isIterative());

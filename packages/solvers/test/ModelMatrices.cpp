@@ -99,7 +99,8 @@ Teuchos::RCP<CrsMatrix> saddlePoint(const Teuchos::RCP<const Teuchos::Comm<int>>
       // K = Laplacian + I, scaled; then Bᵀ: column j = row of u gets B[p, j] for p with j in
       // {2p, 2p+1, 2p+3}.
       poisson2dRow(n, row, c, v);
-      for (auto& x : v) x *= scaleM;
+      for (auto& x : v)
+        x *= scaleM;
       for (size_t k = 0; k < c.size(); ++k)
         if (c[k] == row) v[k] += scaleM;
       const GO j = row;
@@ -195,7 +196,8 @@ double relativeError(const MultiVector& x, const MultiVector& y)
   d.norm2(dn());
   y.norm2(yn());
   double worst = 0.0;
-  for (size_t j = 0; j < dn.size(); ++j) worst = std::max(worst, dn[j] / yn[j]);
+  for (size_t j = 0; j < dn.size(); ++j)
+    worst = std::max(worst, dn[j] / yn[j]);
   return worst;
 }
 

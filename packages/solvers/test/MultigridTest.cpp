@@ -1,4 +1,5 @@
-// Building blocks of the stress-block multigrid (docs/theory.md §"Linear solvers", docs/solvers.md):
+// Building blocks of the stress-block multigrid (docs/theory.md §"Linear solvers",
+// docs/solvers.md):
 //  - the RT prolongation is exact between nested meshes: the prolongated coarse solution, a
 //    fine-mesh function, equals the coarse one (values and divergence) at the cubature points of
 //    every fine element to rounding, 2D and 3D, k = 1 and 2, at any rank count;
@@ -78,9 +79,9 @@ TEUCHOS_UNIT_TEST(Multigrid, ProlongationIsExact)
       std::vector<long long> allGids(coarseSpace->numGlobalDofs());
       for (std::size_t g = 0; g < allGids.size(); ++g)
         allGids[g] = static_cast<long long>(g);
-      auto replicated = Teuchos::rcp(new Tpetra::Map<>(
-          Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-          Teuchos::ArrayView<const long long>(allGids), 0, comm));
+      auto replicated =
+          Teuchos::rcp(new Tpetra::Map<>(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                         Teuchos::ArrayView<const long long>(allGids), 0, comm));
       auto xco = Teuchos::rcp(new Tpetra::MultiVector<>(replicated, 1));
       xco->doImport(*xc, Tpetra::Import<>(xc->getMap(), replicated), Tpetra::INSERT);
       const auto& fo = *xfo->getMap();
@@ -146,7 +147,8 @@ void checkPatches(int dim, Teuchos::FancyOStream& out, bool& success)
   std::vector<int> mine(space.numStressDofs(), 0), all(space.numStressDofs(), 0);
   for (long long g : covered)
     mine[g] = 1;
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(mine.size()), mine.data(), all.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(mine.size()), mine.data(),
+                     all.data());
   int missing = 0;
   for (int v : all)
     missing += v == 0;
@@ -196,8 +198,7 @@ TEUCHOS_UNIT_TEST(Multigrid, HierarchyOfLocalRefinements)
         x += m.coordinates()[2 * v[j]] / 3.0;
         y += m.coordinates()[2 * v[j] + 1] / 3.0;
       }
-      if (x + y < 0.6)
-        marked.push_back(e);
+      if (x + y < 0.6) marked.push_back(e);
     }
     const auto& st = refiner->refine(marked);
     hierarchy.addMesh(refiner->mesh(), st.elementParent);

@@ -30,18 +30,18 @@ struct Marking {
 /// A quantity users read and its estimated error (QuantityError.hpp), for the accuracy targets
 /// of StopCriteria.
 struct QuantityEstimate {
-  std::string name;     ///< one of StopCriteria's target names: force, width, pressure, stick width
+  std::string name;  ///< one of StopCriteria's target names: force, width, pressure, stick width
   double value = 0.0;
   double error = -1.0;  ///< same units as value; negative: no estimate this cycle
 };
 
 /// What the loop needs from a cycle's estimate.
 struct CycleEstimate {
-  long long dofs = 0;    ///< unknowns of the solved cycle (for Max DOFs); 0 if nothing was solved
-  int numElements = 0;   ///< elements of the (replicated) mesh that was solved
+  long long dofs = 0;      ///< unknowns of the solved cycle (for Max DOFs); 0 if nothing was solved
+  int numElements = 0;     ///< elements of the (replicated) mesh that was solved
   bool available = false;  ///< false: no estimate this cycle (η, norm and indicators are unused)
-  double eta = 0.0;      ///< global η = (Σ_T η_T²)^{1/2}, over all ranks
-  double norm = 0.0;     ///< the norm `Target error` is relative to (StressContact: ‖A^{1/2}σ_h‖)
+  double eta = 0.0;        ///< global η = (Σ_T η_T²)^{1/2}, over all ranks
+  double norm = 0.0;  ///< the norm `Target error` is relative to (StressContact: ‖A^{1/2}σ_h‖)
   std::vector<int> ownedElements;  ///< this rank's elements (each element has one owner)
   std::vector<double> indicators;  ///< η_T² of ownedElements[i] (not η_T)
   /// The quantities with targets (empty without): the same on every rank.

@@ -39,14 +39,16 @@ Teuchos::RCP<const Teuchos::ParameterList> AdaptivitySettings::getValidParameter
                       false, 1.0, false);
     core::declareReal(*pl, "Target width error", 0.0,
                       "Target on the estimated error of the contact half-width (2D) or radius "
-                      "(3D)" + relative,
+                      "(3D)" +
+                          relative,
                       0.0, false, 1.0, false);
     core::declareReal(*pl, "Target pressure error", 0.0,
                       "Target on the estimated error of the peak contact pressure" + relative, 0.0,
                       false, 1.0, false);
     core::declareReal(*pl, "Target stick width error", 0.0,
                       "Target on the estimated error of the stick zone's half-width (2D) or "
-                      "radius (3D)" + relative + " Needs friction.",
+                      "radius (3D)" +
+                          relative + " Needs friction.",
                       0.0, false, 1.0, false);
     core::declareReal(*pl, "Time budget", 0.0,
                       "Wall-time budget of the run in seconds, counted from the start of the run "

@@ -21,7 +21,8 @@ void checkTheta(double theta)
 }  // namespace
 
 std::vector<int> Marker::mark(int numElements, const std::vector<int>& ownedElements,
-                              const std::vector<double>& indicators, const Teuchos::Comm<int>& comm) const
+                              const std::vector<double>& indicators,
+                              const Teuchos::Comm<int>& comm) const
 {
   SC_THROW_IF(ownedElements.size() != indicators.size(), core::InternalError,
               ownedElements.size() << " owned elements but " << indicators.size() << " indicators");
@@ -43,20 +44,17 @@ std::vector<int> DorflerMarker::select(const std::vector<double>& eta2) const
 {
   std::vector<int> order(eta2.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return eta2[a] > eta2[b] || (eta2[a] == eta2[b] && a < b);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return eta2[a] > eta2[b] || (eta2[a] == eta2[b] && a < b); });
   // Sum in the order of the sort (largest first) so that the total and the prefix agree.
   double total = 0.0;
   for (int e : order)
     total += eta2[e];
   std::vector<int> marked;
-  if (total <= 0.0)
-    return marked;  // η = 0: nothing to refine
+  if (total <= 0.0) return marked;  // η = 0: nothing to refine
   double sum = 0.0;
   for (int e : order) {
-    if (sum >= theta_ * total)
-      break;
+    if (sum >= theta_ * total) break;
     marked.push_back(e);
     sum += eta2[e];
   }
@@ -69,12 +67,10 @@ std::vector<int> MaximumMarker::select(const std::vector<double>& eta2) const
 {
   const double mx = eta2.empty() ? 0.0 : *std::max_element(eta2.begin(), eta2.end());
   std::vector<int> marked;
-  if (mx <= 0.0)
-    return marked;
+  if (mx <= 0.0) return marked;
   // η_T ≥ θ max η_T  ⇔  η_T² ≥ θ² max η_T².
   for (std::size_t e = 0; e < eta2.size(); ++e)
-    if (eta2[e] >= theta_ * theta_ * mx)
-      marked.push_back(static_cast<int>(e));
+    if (eta2[e] >= theta_ * theta_ * mx) marked.push_back(static_cast<int>(e));
   return marked;
 }
 
@@ -87,12 +83,9 @@ std::vector<int> UniformMarker::select(const std::vector<double>& eta2) const
 
 std::unique_ptr<Marker> createMarker(const AdaptivitySettings& s)
 {
-  if (s.marking == "Dorfler")
-    return std::make_unique<DorflerMarker>(s.bulkParameter);
-  if (s.marking == "Maximum")
-    return std::make_unique<MaximumMarker>(s.bulkParameter);
-  if (s.marking == "Uniform")
-    return std::make_unique<UniformMarker>();
+  if (s.marking == "Dorfler") return std::make_unique<DorflerMarker>(s.bulkParameter);
+  if (s.marking == "Maximum") return std::make_unique<MaximumMarker>(s.bulkParameter);
+  if (s.marking == "Uniform") return std::make_unique<UniformMarker>();
   throw core::InputError("'Adaptivity/Marking' = '" + s.marking +
                          "': valid are 'Dorfler', 'Maximum', 'Uniform'.");
 }

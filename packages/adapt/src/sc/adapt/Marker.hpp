@@ -21,7 +21,8 @@ public:
   /// `indicators[i]` = η_T² of element `ownedElements[i]`; `numElements` = elements of the mesh.
   /// Returns the marked elements (sorted, the same on every rank).
   std::vector<int> mark(int numElements, const std::vector<int>& ownedElements,
-                        const std::vector<double>& indicators, const Teuchos::Comm<int>& comm) const;
+                        const std::vector<double>& indicators,
+                        const Teuchos::Comm<int>& comm) const;
 
 protected:
   /// The selection from all elements' η_T² (identical input on every rank).

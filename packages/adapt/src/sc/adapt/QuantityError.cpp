@@ -14,20 +14,17 @@ double estimateQuantityError(const std::vector<QuantitySample>& history, double 
                   !(settings.rate >= 0.0),
               core::InternalError,
               "estimateQuantityError: window " << settings.window << ", safety factor "
-                                               << settings.safetyFactor << ", rate " << settings.rate
-                                               << ", floor " << floor);
+                                               << settings.safetyFactor << ", rate "
+                                               << settings.rate << ", floor " << floor);
   const int n = static_cast<int>(history.size()) - 1;
-  if (n < 1)
-    return -1.0;
+  if (n < 1) return -1.0;
   const QuantitySample& last = history[n];
-  if (!(last.eta > 0.0) || !std::isfinite(last.value))
-    return -1.0;
+  if (!(last.eta > 0.0) || !std::isfinite(last.value)) return -1.0;
   double error = -1.0;
   for (int j = std::max(0, n - settings.window); j < n; ++j) {
     const QuantitySample& s = history[j];
     // Only a cycle with a larger η says how fast the quantity moves per unit of η.
-    if (!(s.eta > last.eta) || !std::isfinite(s.value))
-      continue;
+    if (!(s.eta > last.eta) || !std::isfinite(s.value)) continue;
     const double change = std::abs(s.value - last.value);
     if (settings.rate == 0.0) {
       error = std::max(error, change);
@@ -36,8 +33,7 @@ double estimateQuantityError(const std::vector<QuantitySample>& history, double 
     const double now = std::pow(last.eta, settings.rate);
     error = std::max(error, change * now / (std::pow(s.eta, settings.rate) - now));
   }
-  if (error < 0.0)
-    return -1.0;
+  if (error < 0.0) return -1.0;
   return std::max(settings.safetyFactor * error, floor);
 }
 

@@ -22,12 +22,15 @@ StopCriteria::StopCriteria(const AdaptivitySettings& s) : settings_(s)
                                    {"Target pressure error", s.targetPressureError},
                                    {"Target stick width error", s.targetStickError}})
     SC_THROW_IF(!(value >= 0.0 && value <= 1.0), core::InputError,
-                "'Adaptivity/" << key << "' = " << value << ": valid range [0, 1] (relative; 0: no target).");
+                "'Adaptivity/" << key << "' = " << value
+                               << ": valid range [0, 1] (relative; 0: no target).");
   SC_THROW_IF(!(s.timeBudget >= 0.0), core::InputError,
-              "'Adaptivity/Time budget' = " << s.timeBudget << ": valid range [0, inf) seconds (0: none).");
+              "'Adaptivity/Time budget' = " << s.timeBudget
+                                            << ": valid range [0, inf) seconds (0: none).");
 }
 
-std::vector<TargetStatus> StopCriteria::targets(const std::vector<QuantityEstimate>& quantities) const
+std::vector<TargetStatus>
+StopCriteria::targets(const std::vector<QuantityEstimate>& quantities) const
 {
   std::vector<TargetStatus> out;
   for (const auto& [name, key, target] :
@@ -35,8 +38,7 @@ std::vector<TargetStatus> StopCriteria::targets(const std::vector<QuantityEstima
         {"width", "Target width error", settings_.targetWidthError},
         {"pressure", "Target pressure error", settings_.targetPressureError},
         {"stick width", "Target stick width error", settings_.targetStickError}}) {
-    if (!(target > 0.0))
-      continue;
+    if (!(target > 0.0)) continue;
     TargetStatus t;
     t.name = name;
     t.key = std::string("Adaptivity/") + key;
@@ -75,11 +77,9 @@ std::string describe(const std::vector<TargetStatus>& list)
 std::string StopCriteria::targetsReason(const std::vector<QuantityEstimate>& quantities) const
 {
   const auto list = targets(quantities);
-  if (list.empty())
-    return "";
+  if (list.empty()) return "";
   for (const auto& t : list)
-    if (!t.met)
-      return "";
+    if (!t.met) return "";
   return "accuracy targets met (estimated relative errors): " + describe(list);
 }
 
@@ -88,18 +88,15 @@ std::string StopCriteria::unmetTargets(const std::vector<QuantityEstimate>& quan
   const auto list = targets(quantities);
   std::vector<TargetStatus> unmet;
   for (const auto& t : list)
-    if (!t.met)
-      unmet.push_back(t);
-  if (unmet.empty())
-    return "";
+    if (!t.met) unmet.push_back(t);
+  if (unmet.empty()) return "";
   return "; accuracy targets not met (estimated relative errors): " + describe(unmet);
 }
 
 std::string StopCriteria::budgetReason(double elapsed, double nextSeconds,
                                        const std::vector<QuantityEstimate>& quantities) const
 {
-  if (!(settings_.timeBudget > 0.0) || elapsed + nextSeconds <= settings_.timeBudget)
-    return "";
+  if (!(settings_.timeBudget > 0.0) || elapsed + nextSeconds <= settings_.timeBudget) return "";
   std::ostringstream os;
   os.precision(3);
   os << "time budget: the next cycle would end at about " << elapsed + nextSeconds
@@ -118,13 +115,13 @@ std::string StopCriteria::reason(int cycle, long long dofs, double eta, double s
     os << dofs << " DOFs >= Max DOFs = " << settings_.maxDofs;
   else if (settings_.targetError > 0.0 && eta >= 0.0 && stressNorm >= 0.0 &&
            eta <= settings_.targetError * stressNorm)
-    os << "eta = " << eta << " <= Target error " << settings_.targetError << " x |A^1/2 sigma_h| = "
-       << settings_.targetError * stressNorm;
+    os << "eta = " << eta << " <= Target error " << settings_.targetError
+       << " x |A^1/2 sigma_h| = " << settings_.targetError * stressNorm;
   return os.str();
 }
 
 std::string StopCriteria::memoryReason(double nextDofs, double nextBytes, double limitBytes,
-                                      const std::string& limitSource) const
+                                       const std::string& limitSource) const
 {
   if (!(nextBytes > limitBytes)) return "";
   std::ostringstream os;

@@ -14,9 +14,9 @@ namespace sc::adapt {
 
 /// One accuracy target against a cycle's estimate.
 struct TargetStatus {
-  std::string name;        ///< the quantity (QuantityEstimate::name)
-  std::string key;         ///< its deck key, e.g. "Adaptivity/Target force error"
-  double target = 0.0;     ///< relative
+  std::string name;             ///< the quantity (QuantityEstimate::name)
+  std::string key;              ///< its deck key, e.g. "Adaptivity/Target force error"
+  double target = 0.0;          ///< relative
   double relativeError = -1.0;  ///< estimated error / |value|; negative: no estimate
   bool met = false;
 };
@@ -43,7 +43,8 @@ public:
   /// The reason to stop before a refinement whose next mesh is estimated at `nextDofs` DOFs
   /// and `nextBytes` bytes, if that exceeds `limitBytes` (from `limitSource`, e.g.
   /// "MemAvailable in /proc/meminfo"), or "" (the run stops cleanly, with
-  /// its solved cycles written, instead of dying in std::bad_alloc; docs/mesh.md "Resource limits").
+  /// its solved cycles written, instead of dying in std::bad_alloc; docs/mesh.md "Resource
+  /// limits").
   std::string memoryReason(double nextDofs, double nextBytes, double limitBytes,
                            const std::string& limitSource) const;
 

@@ -50,25 +50,27 @@ struct BlockSystem::Impl {
 };
 
 BlockSystem::BlockSystem(const MixedElasticityAssembler& assembler, double twoMu)
-  : BlockSystem(assembler.matrix(),
-                FieldLayout{assembler.space().numStressDofs(), assembler.space().numDisplacementDofs(),
-                            assembler.space().numRotationDofs()},
-                twoMu)
+    : BlockSystem(assembler.matrix(),
+                  FieldLayout{assembler.space().numStressDofs(),
+                              assembler.space().numDisplacementDofs(),
+                              assembler.space().numRotationDofs()},
+                  twoMu)
 {
 }
 
 BlockSystem::BlockSystem(Teuchos::RCP<const CrsMatrix> monolithic, const FieldLayout& layout,
                          double twoMu)
-  : layout_(layout), twoMu_(twoMu), impl_(std::make_unique<Impl>())
+    : layout_(layout), twoMu_(twoMu), impl_(std::make_unique<Impl>())
 {
   SC_THROW_IF(monolithic.is_null() || !monolithic->isFillComplete(), core::InternalError,
               "BlockSystem needs an assembled (fill-complete) monolithic matrix");
-  SC_THROW_IF(static_cast<long long>(monolithic->getGlobalNumRows()) != layout.total(),
-              core::InternalError,
-              "BlockSystem: the matrix has " << monolithic->getGlobalNumRows()
-                  << " rows but the field layout " << layout.stressDofs << " + "
-                  << layout.displacementDofs << " + " << layout.rotationDofs << " DOFs");
-  SC_THROW_IF(!(twoMu > 0.0), core::InternalError, "BlockSystem: scaling 2μ = " << twoMu << " must be > 0");
+  SC_THROW_IF(
+      static_cast<long long>(monolithic->getGlobalNumRows()) != layout.total(), core::InternalError,
+      "BlockSystem: the matrix has "
+          << monolithic->getGlobalNumRows() << " rows but the field layout " << layout.stressDofs
+          << " + " << layout.displacementDofs << " + " << layout.rotationDofs << " DOFs");
+  SC_THROW_IF(!(twoMu > 0.0), core::InternalError,
+              "BlockSystem: scaling 2μ = " << twoMu << " must be > 0");
   impl_->monolithic = std::move(monolithic);
   build(*impl_->monolithic);
 }
@@ -82,9 +84,10 @@ void BlockSystem::build(const CrsMatrix& M)
   const Map& colMap = *M.getColMap();
   const auto comm = rowMap.getComm();
   // Field maps are cut from the row map; vectors of the range/domain map must split the same way.
-  SC_THROW_IF(!M.getRangeMap()->isSameAs(rowMap) || !M.getDomainMap()->isSameAs(rowMap),
-              core::InternalError,
-              "BlockSystem needs a matrix whose row, range and domain maps are the same (owned) map");
+  SC_THROW_IF(
+      !M.getRangeMap()->isSameAs(rowMap) || !M.getDomainMap()->isSameAs(rowMap),
+      core::InternalError,
+      "BlockSystem needs a matrix whose row, range and domain maps are the same (owned) map");
   const LO nRows = static_cast<LO>(rowMap.getNodeNumElements());
   const LO nCols = static_cast<LO>(colMap.getNodeNumElements());
 
@@ -113,21 +116,22 @@ void BlockSystem::build(const CrsMatrix& M)
     for (LO r : I.monolithicLocal[bi]) {
       M.getLocalRowView(r, cols, vals);
       for (std::size_t k = 0; k < cols.extent(0); ++k)
-        if (!structurallyNonzero(bi, colField[cols(k)]) && vals(k) != 0.0)
-          ++dropped;
+        if (!structurallyNonzero(bi, colField[cols(k)]) && vals(k) != 0.0) ++dropped;
     }
   const long long droppedAll = core::sumOverRanks(*comm, dropped);
   SC_THROW_IF(droppedAll > 0, core::InternalError,
-              "BlockSystem: the matrix has " << droppedAll << " non-zero entries in the uu, uθ, θu "
-                  "or θθ blocks, which the mixed elasticity system has as zero blocks (docs/theory.md §\"Mixed formulation\")");
+              "BlockSystem: the matrix has "
+                  << droppedAll
+                  << " non-zero entries in the uu, uθ, θu "
+                     "or θθ blocks, which the mixed elasticity system has as zero blocks "
+                     "(docs/theory.md §\"Mixed formulation\")");
 
   // Each non-zero block as local CSR arrays on a column map made of the columns of M it uses
   // (in M's column-map order, so sorted rows stay sorted).
   std::vector<LO> blockCol(nCols);
   for (int bi = 0; bi < numFields; ++bi)
     for (int bj = 0; bj < numFields; ++bj) {
-      if (!structurallyNonzero(bi, bj))
-        continue;
+      if (!structurallyNonzero(bi, bj)) continue;
       const auto& rows = I.monolithicLocal[bi];
       std::fill(blockCol.begin(), blockCol.end(), LO(-1));
       std::size_t nnz = 0;
@@ -145,8 +149,9 @@ void BlockSystem::build(const CrsMatrix& M)
           blockCol[c] = static_cast<LO>(colGids.size());
           colGids.push_back(colMap.getGlobalElement(c) - layout_.begin(bj));
         }
-      auto blockColMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                              Teuchos::ArrayView<const GO>(colGids), 0, comm));
+      auto blockColMap =
+          Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                               Teuchos::ArrayView<const GO>(colGids), 0, comm));
       const double scale = bi == 0 && bj == 0 ? twoMu_ : 1.0;
       Teuchos::ArrayRCP<std::size_t> ptr(rows.size() + 1);
       Teuchos::ArrayRCP<LO> ind(nnz);
@@ -158,8 +163,7 @@ void BlockSystem::build(const CrsMatrix& M)
         M.getLocalRowView(rows[lr], cols, vals);
         row.clear();
         for (std::size_t k = 0; k < cols.extent(0); ++k)
-          if (colField[cols(k)] == bj)
-            row.emplace_back(blockCol[cols(k)], scale * vals(k));
+          if (colField[cols(k)] == bj) row.emplace_back(blockCol[cols(k)], scale * vals(k));
         // expertStaticFillComplete takes the rows as sorted; M's are, but do not rely on it.
         std::sort(row.begin(), row.end(),
                   [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -196,7 +200,10 @@ void BlockSystem::build(const CrsMatrix& M)
   I.op = op;
 }
 
-Teuchos::RCP<const Map> BlockSystem::monolithicMap() const { return impl_->monolithic->getRowMap(); }
+Teuchos::RCP<const Map> BlockSystem::monolithicMap() const
+{
+  return impl_->monolithic->getRowMap();
+}
 
 Teuchos::RCP<const Map> BlockSystem::fieldMap(int field) const { return impl_->maps.at(field); }
 
@@ -220,7 +227,8 @@ Teuchos::RCP<Thyra::MultiVectorBase<double>> BlockSystem::split(const MultiVecto
   const auto& I = *impl_;
   SC_THROW_IF(x.getLocalLength() != monolithicMap()->getNodeNumElements(), core::InternalError,
               "BlockSystem::split: the vector has " << x.getLocalLength()
-                  << " local entries, the monolithic map " << monolithicMap()->getNodeNumElements());
+                                                    << " local entries, the monolithic map "
+                                                    << monolithicMap()->getNodeNumElements());
   const std::size_t nv = x.getNumVectors();
   Teuchos::Array<Teuchos::RCP<Thyra::MultiVectorBase<double>>> parts;
   for (int f = 0; f < numFields; ++f) {
@@ -247,15 +255,16 @@ void BlockSystem::merge(const Thyra::MultiVectorBase<double>& blocked, MultiVect
   SC_THROW_IF(x.getLocalLength() != monolithicMap()->getNodeNumElements() ||
                   static_cast<int>(x.getNumVectors()) != blocked.domain()->dim(),
               core::InternalError,
-              "BlockSystem::merge: the monolithic vector has " << x.getLocalLength() << " local rows and "
-                  << x.getNumVectors() << " columns; expected " << monolithicMap()->getNodeNumElements()
-                  << " and " << blocked.domain()->dim());
+              "BlockSystem::merge: the monolithic vector has "
+                  << x.getLocalLength() << " local rows and " << x.getNumVectors()
+                  << " columns; expected " << monolithicMap()->getNodeNumElements() << " and "
+                  << blocked.domain()->dim());
   for (int f = 0; f < numFields; ++f) {
     auto xf = Extract::getConstTpetraMultiVector(p->getMultiVectorBlock(f));
     const auto& idx = I.monolithicLocal[f];
     SC_THROW_IF(xf->getLocalLength() != idx.size(), core::InternalError,
                 "BlockSystem::merge: block " << f << " has " << xf->getLocalLength()
-                    << " local rows, the field map " << idx.size());
+                                             << " local rows, the field map " << idx.size());
     for (std::size_t k = 0; k < x.getNumVectors(); ++k) {
       auto src = xf->getData(k);
       auto dst = x.getDataNonConst(k);

@@ -39,7 +39,10 @@ struct FieldLayout {
 
   long long size(int field) const;
   /// First monolithic global id of the field (0, #σ, #σ + #u).
-  long long begin(int field) const { return field == 0 ? 0 : field == 1 ? stressDofs : stressDofs + displacementDofs; }
+  long long begin(int field) const
+  {
+    return field == 0 ? 0 : field == 1 ? stressDofs : stressDofs + displacementDofs;
+  }
   long long total() const { return stressDofs + displacementDofs + rotationDofs; }
   /// Field of a monolithic global id.
   int fieldOf(long long gid) const { return gid < begin(1) ? 0 : gid < begin(2) ? 1 : 2; }

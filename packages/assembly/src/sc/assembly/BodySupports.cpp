@@ -13,8 +13,7 @@ namespace sc::assembly {
 void checkEveryBodyIsHeld(const mesh::SimplexMesh& m, const core::BoundaryConditions& bcs)
 {
   const auto bodies = mesh::meshBodies(m);
-  if (bodies.size() < 2)
-    return;
+  if (bodies.size() < 2) return;
   const int d = m.dim();
   const auto frames = normalFrameParts(m, bcs);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -34,12 +33,13 @@ void checkEveryBodyIsHeld(const mesh::SimplexMesh& m, const core::BoundaryCondit
       parts << (bc ? "" : ", not in 'Boundary Conditions'") << ")";
       parts << (id == bodies[b].boundaryIds.back() ? "" : ", ");
     }
-    held = held || (!bodyFrames.empty() && freeRigidMotions(m, bodyFrames, &bodies[b].elements).empty());
+    held = held ||
+           (!bodyFrames.empty() && freeRigidMotions(m, bodyFrames, &bodies[b].elements).empty());
     SC_THROW_IF(!held, core::InputError,
-                "the mesh of " << m.origin() << " holds " << bodies.size()
-                    << " bodies that share no face, and body " << b + 1 << " of "
-                    << bodies.size() << " ("
-                    << bodies[b].describe(d) << ") is not held: its boundary parts are "
+                "the mesh of "
+                    << m.origin() << " holds " << bodies.size()
+                    << " bodies that share no face, and body " << b + 1 << " of " << bodies.size()
+                    << " (" << bodies[b].describe(d) << ") is not held: its boundary parts are "
                     << parts.str() << ". Nothing fixes its rigid-body motions (contact, "
                     << "tractions, pressures and Free parts do not), so the problem is "
                     << "ill-posed. Give one of its parts Type 'Displacement', or give it Symmetry "

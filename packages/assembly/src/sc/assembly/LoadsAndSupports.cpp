@@ -52,9 +52,9 @@ std::map<std::string, NormalFramePart> normalFrameParts(const mesh::SimplexMesh&
   const double tolerance = 1e-9 * boundingBox(m, centre);
   std::map<std::string, NormalFramePart> parts;
   for (const auto& bc : bcs.conditions) {
-    if (!bc.inNormalFrame() || !m.hasBoundary(bc.boundary))
-      continue;
-    const std::string key = "'Boundary Conditions/" + bc.boundary + "/Type' = '" + core::toString(bc.type) + "'";
+    if (!bc.inNormalFrame() || !m.hasBoundary(bc.boundary)) continue;
+    const std::string key =
+        "'Boundary Conditions/" + bc.boundary + "/Type' = '" + core::toString(bc.type) + "'";
     const auto faces = m.boundaryFacesOf(bc.boundary);
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, mean[3] = {0, 0, 0};
     bool first = true;
@@ -73,7 +73,8 @@ std::map<std::string, NormalFramePart> normalFrameParts(const mesh::SimplexMesh&
     }
     NormalFramePart part;
     for (int c = 0; c < d; ++c)
-      if (hi[c] - lo[c] <= tolerance && (part.axis < 0 || hi[c] - lo[c] < hi[part.axis] - lo[part.axis]))
+      if (hi[c] - lo[c] <= tolerance &&
+          (part.axis < 0 || hi[c] - lo[c] < hi[part.axis] - lo[part.axis]))
         part.axis = c;
     double norm = 0.0;
     for (int c = 0; c < d; ++c)
@@ -128,8 +129,7 @@ void checkNormalFramePartsFlat(const mesh::SimplexMesh& m, const core::BoundaryC
   for (const auto& [name, part] : normalFrameParts(m, bcs))
     for (int f : m.boundaryFacesOf(name)) {
       const int e = m.faceElements(f)[0];
-      if (!curved.isCurved(e))
-        continue;
+      if (!curved.isCurved(e)) continue;
       const int* fv = m.faceVertices(f);
       const double* p0 = m.vertex(fv[0]);
       const int* edges = m.elementEdges(e);
@@ -137,30 +137,31 @@ void checkNormalFramePartsFlat(const mesh::SimplexMesh& m, const core::BoundaryC
       for (int k = 0; k < nEdges; ++k) {
         const int* ev = m.edgeVertices(edges[k]);
         const bool onFace = std::count(fv, fv + d, ev[0]) && std::count(fv, fv + d, ev[1]);
-        if (!onFace || !curved.isCurvedEdge(edges[k]))
-          continue;
+        if (!onFace || !curved.isCurvedEdge(edges[k])) continue;
         const double* mid = curved.edgeMidpoint(edges[k]);
         double h = 0.0;
         for (int c = 0; c < d; ++c)
           h += (mid[c] - p0[c]) * part.normal[c];
         const core::BoundaryCondition* bc = bcs.find(name);
-        SC_THROW_IF(std::abs(h) > tolerance, core::InputError,
-                    "'Boundary Conditions/" << name << "/Type' = '" << core::toString(bc->type)
-                        << "' needs a flat part, but '" << name << "' is curved (its quadratic "
-                        << "faces, Mesh/Geometry order = 2, follow a curved geometry: the "
-                        << "midpoint " << vectorText(mid, d) << " of one of its edges is " << std::abs(h)
-                        << " away from the " << (d == 2 ? "line" : "plane") << " of its vertices): "
-                        << "conditions in the normal–tangential frame of curved parts are not "
-                        << "supported (docs/theory.md §\"Loads and supports\"); use Mesh/Geometry "
-                        << "order = 1 with Mesh/Project boundary = false to keep the part straight, "
-                        << "or Type Displacement or Pressure.");
+        SC_THROW_IF(
+            std::abs(h) > tolerance, core::InputError,
+            "'Boundary Conditions/"
+                << name << "/Type' = '" << core::toString(bc->type) << "' needs a flat part, but '"
+                << name << "' is curved (its quadratic "
+                << "faces, Mesh/Geometry order = 2, follow a curved geometry: the "
+                << "midpoint " << vectorText(mid, d) << " of one of its edges is " << std::abs(h)
+                << " away from the " << (d == 2 ? "line" : "plane") << " of its vertices): "
+                << "conditions in the normal–tangential frame of curved parts are not "
+                << "supported (docs/theory.md §\"Loads and supports\"); use Mesh/Geometry "
+                << "order = 1 with Mesh/Project boundary = false to keep the part straight, "
+                << "or Type Displacement or Pressure.");
       }
     }
 }
 
-std::vector<std::vector<double>> freeRigidMotions(const mesh::SimplexMesh& m,
-                                                  const std::map<std::string, NormalFramePart>& parts,
-                                                  const std::vector<int>* elements)
+std::vector<std::vector<double>>
+freeRigidMotions(const mesh::SimplexMesh& m, const std::map<std::string, NormalFramePart>& parts,
+                 const std::vector<int>* elements)
 {
   const int d = m.dim(), r = d == 2 ? 3 : 6;
   double centre[3] = {0, 0, 0};
@@ -197,8 +198,9 @@ std::vector<std::vector<double>> freeRigidMotions(const mesh::SimplexMesh& m,
   std::vector<double> eig(r), work(3 * r);
   int info = 0;
   Teuchos::LAPACK<int, double>().SYEV('V', 'U', r, G.data(), r, eig.data(), work.data(),
-                                       static_cast<int>(work.size()), &info);
-  SC_THROW_IF(info != 0, core::InternalError, "LAPACK SYEV failed in freeRigidMotions (" << info << ")");
+                                      static_cast<int>(work.size()), &info);
+  SC_THROW_IF(info != 0, core::InternalError,
+              "LAPACK SYEV failed in freeRigidMotions (" << info << ")");
   std::vector<std::vector<double>> free;
   const double largest = std::max(eig[r - 1], 0.0);
   for (int i = 0; i < r; ++i)
@@ -212,15 +214,13 @@ std::string describeRigidMotion(const std::vector<double>& v, int d)
   double rotation = 0.0, translation = 0.0;
   for (std::size_t i = 0; i < v.size(); ++i)
     (static_cast<int>(i) < d ? translation : rotation) += v[i] * v[i];
-  if (rotation > 1e-16 * (rotation + translation))
-    return "against a rotation";
+  if (rotation > 1e-16 * (rotation + translation)) return "against a rotation";
   std::vector<double> t(v.begin(), v.begin() + d);
   const double norm = std::sqrt(translation);
   for (int c = 0; c < d; ++c)
     t[c] /= norm;
   for (int c = 0; c < d; ++c)
-    if (std::abs(std::abs(t[c]) - 1.0) < 1e-9)
-      return std::string("along ") + axisName(c);
+    if (std::abs(std::abs(t[c]) - 1.0) < 1e-9) return std::string("along ") + axisName(c);
   // The sign of a null vector is arbitrary: show the one with a positive first large entry.
   int lead = 0;
   while (lead < d - 1 && std::abs(t[lead]) < 1e-9)
@@ -233,8 +233,7 @@ std::string describeRigidMotion(const std::vector<double>& v, int d)
 
 std::string describePlane(const NormalFramePart& part, int d)
 {
-  if (part.axis >= 0)
-    return std::string(axisName(part.axis)) + " = const";
+  if (part.axis >= 0) return std::string(axisName(part.axis)) + " = const";
   return "normal " + vectorText(part.normal.data(), d);
 }
 
@@ -249,7 +248,8 @@ int checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data
     bool onlySymmetry = true;
     std::ostringstream names;
     for (const auto& [name, part] : parts) {
-      names << (names.tellp() > 0 ? ", " : "") << "'" << name << "' (" << describePlane(part, d) << ")";
+      names << (names.tellp() > 0 ? ", " : "") << "'" << name << "' (" << describePlane(part, d)
+            << ")";
       onlySymmetry = onlySymmetry && bcs.find(name)->type == core::BoundaryType::Symmetry;
     }
     const auto free = freeRigidMotions(m, parts);
@@ -262,8 +262,7 @@ int checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data
     int planeAxis = -1;
     if (plane && bcs.hasContact())
       for (int c = 0; c < d; ++c)
-        if (std::abs(plane->normal[c]) >= 1.0 - 1e-12)
-          planeAxis = c;
+        if (std::abs(plane->normal[c]) >= 1.0 - 1e-12) planeAxis = c;
     if (free.size() == 1 && planeAxis >= 0 &&
         describeRigidMotion(free[0], d) == std::string("along ") + axisName(planeAxis))
       heldByContact = planeAxis;
@@ -282,8 +281,7 @@ int checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data
   // Formulas: finite at the vertices where they are used (Expression throws otherwise, naming the
   // key, the formula and the point).
   for (const auto& bc : bcs.conditions) {
-    if (bc.expression.empty() || !m.hasBoundary(bc.boundary))
-      continue;
+    if (bc.expression.empty() || !m.hasBoundary(bc.boundary)) continue;
     for (int f : m.boundaryFacesOf(bc.boundary))
       for (int k = 0; k < d; ++k)
         for (const auto& e : bc.expression)

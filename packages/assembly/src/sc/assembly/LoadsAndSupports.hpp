@@ -14,7 +14,7 @@
 namespace sc::mesh {
 class SimplexMesh;
 class CurvedElements;
-}
+}  // namespace sc::mesh
 
 namespace sc::assembly {
 
@@ -33,8 +33,8 @@ struct NormalFramePart {
 /// than 1e-9 of the mesh's size from that plane, or whose faces face opposite ways, is an
 /// InputError naming the key, the part and how far from flat it is (curved parts are not
 /// supported). MixedElasticityAssembler checks the faces of curved elements in addition.
-std::map<std::string, NormalFramePart> normalFrameParts(const mesh::SimplexMesh& mesh,
-                                                        const core::BoundaryConditions& boundaryConditions);
+std::map<std::string, NormalFramePart>
+normalFrameParts(const mesh::SimplexMesh& mesh, const core::BoundaryConditions& boundaryConditions);
 
 /// normalFrameParts for the quadratic geometry: every curved edge of a face on a Symmetry or
 /// Normal displacement part must have its midpoint node in the part's plane (to 1e-9 of the
@@ -49,9 +49,9 @@ void checkNormalFramePartsFlat(const mesh::SimplexMesh& mesh,
 /// normal-frame parts (on their faces that belong to `elements`, ascending, when given): a basis
 /// of the null space, each vector (c, ω) with d + 1 (2D) or 6 (3D) entries, translations first.
 /// Empty when the parts hold the body.
-std::vector<std::vector<double>> freeRigidMotions(const mesh::SimplexMesh& mesh,
-                                                  const std::map<std::string, NormalFramePart>& parts,
-                                                  const std::vector<int>* elements = nullptr);
+std::vector<std::vector<double>>
+freeRigidMotions(const mesh::SimplexMesh& mesh, const std::map<std::string, NormalFramePart>& parts,
+                 const std::vector<int>* elements = nullptr);
 
 /// "along y", "along (0.5, 0.866)" or "against a rotation" for a free rigid motion.
 std::string describeRigidMotion(const std::vector<double>& motion, int dim);

@@ -29,8 +29,7 @@ void solveDense(std::vector<double> M, std::vector<double>& r, int n)
   for (int k = 0; k < n; ++k) {
     int p = k;
     for (int i = k + 1; i < n; ++i)
-      if (std::abs(M[i * n + k]) > std::abs(M[p * n + k]))
-        p = i;
+      if (std::abs(M[i * n + k]) > std::abs(M[p * n + k])) p = i;
     SC_THROW_IF(std::abs(M[p * n + k]) < 1e-300, core::InternalError,
                 "singular face mass matrix in the traction projection");
     if (p != k) {
@@ -68,8 +67,7 @@ void normalFrame(const double* n, int d, int& a, double R[3][3])
 {
   a = 0;
   for (int c = 1; c < d; ++c)
-    if (std::abs(n[c]) > std::abs(n[a]))
-      a = c;
+    if (std::abs(n[c]) > std::abs(n[a])) a = c;
   for (int c = 0; c < d; ++c)
     R[a][c] = n[c];
   if (d == 2) {
@@ -148,7 +146,7 @@ struct MixedElasticityAssembler::Impl {
 MixedElasticityAssembler::MixedElasticityAssembler(
     Teuchos::RCP<const disc::MixedElasticitySpace> space,
     Teuchos::RCP<const Teuchos::Comm<int>> comm)
-  : space_(std::move(space)), comm_(std::move(comm)), impl_(std::make_unique<Impl>())
+    : space_(std::move(space)), comm_(std::move(comm)), impl_(std::make_unique<Impl>())
 {
   buildGraph();
 }
@@ -164,9 +162,9 @@ void MixedElasticityAssembler::buildGraph()
   // FECrsGraph wants the overlap map to list the owned GIDs first, in the owned map's order.
   std::vector<GO> overlapGids(ownedDofs.begin(), ownedDofs.end());
   for (long long g : S.overlapDofs())
-    if (S.dofOwner(g) != S.rank())
-      overlapGids.push_back(g);
-  impl_->owned = Teuchos::rcp(new Map(n, Teuchos::ArrayView<const GO>(ownedDofs.data(), ownedDofs.size()), 0, comm_));
+    if (S.dofOwner(g) != S.rank()) overlapGids.push_back(g);
+  impl_->owned = Teuchos::rcp(
+      new Map(n, Teuchos::ArrayView<const GO>(ownedDofs.data(), ownedDofs.size()), 0, comm_));
   impl_->overlap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                         Teuchos::ArrayView<const GO>(overlapGids), 0, comm_));
   impl_->importer = Teuchos::rcp(new Tpetra::Import<>(impl_->owned, impl_->overlap));
@@ -233,7 +231,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
   for (const auto& bc : data.boundaryConditions.conditions) {
     SC_THROW_IF(bc.fromExactSolution && !exact, core::InputError,
                 "'Boundary Conditions/" << bc.boundary << "/Data' = 'Exact solution', but "
-                    << "'Problem/Exact solution' is 'None'.");
+                                        << "'Problem/Exact solution' is 'None'.");
   }
   const bool bodyForce = data.hasBodyForce();
   // The same on every rank (replicated mesh): a bad Symmetry part fails on all ranks together.
@@ -310,15 +308,15 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
         for (int a = 0; a < nRT; ++a)
           for (int bb = 0; bb < nRT; ++bb)
             KK(S.stressOffset(i) + a, S.stressOffset(j) + bb) +=
-                inv2mu * ((i == j ? G[a * nRT + bb] : 0.0) - cd * P[((i * d + j) * nRT + a) * nRT + bb]);
+                inv2mu *
+                ((i == j ? G[a * nRT + bb] : 0.0) - cd * P[((i * d + j) * nRT + a) * nRT + bb]);
 
     // Boundary faces: natural u_D, essential t (projected; −p n for a pressure), free (t = 0),
     // and Symmetry / Normal displacement (the tangential components zero).
     const int* faces = m.elementFaces(e);
     for (int lf = 0; lf <= d; ++lf) {
       const int f = faces[lf];
-      if (!m.isBoundaryFace(f))
-        continue;
+      if (!m.isBoundaryFace(f)) continue;
       const core::BoundaryCondition* bc =
           data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
       const core::BoundaryType type = bc ? bc->type : core::BoundaryType::Free;
@@ -327,8 +325,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       // Contact: no term here. ⟨ũ, τn⟩_ΓC is the residual of these rows, which the contact package
       // (ActiveSetSolver) turns into the contact conditions (docs/theory.md §"Contact and
       // friction").
-      if (type == core::BoundaryType::Contact)
-        continue;
+      if (type == core::BoundaryType::Contact) continue;
       if (type == core::BoundaryType::Displacement) {
         fv.reinit(e, lf);
         for (int q = 0; q < fv.numPoints(); ++q) {
@@ -355,9 +352,10 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
             for (int c = 0; c < d; ++c)
               dev += std::pow(fv.normal(q)[c] - n[c], 2);
             SC_THROW_IF(std::sqrt(dev) > 1e-9, core::InputError,
-                        "'Boundary Conditions/" << bc->boundary << "/Type' = '"
-                            << core::toString(bc->type) << "' needs a flat part, but '"
-                            << bc->boundary << "' is curved (its quadratic faces, Mesh/Geometry "
+                        "'Boundary Conditions/"
+                            << bc->boundary << "/Type' = '" << core::toString(bc->type)
+                            << "' needs a flat part, but '" << bc->boundary
+                            << "' is curved (its quadratic faces, Mesh/Geometry "
                             << "order = 2, turn their normal by " << std::sqrt(dev) << " rad): "
                             << "conditions in the normal–tangential frame of curved parts are "
                             << "not supported (docs/theory.md §\"Loads and supports\").");
@@ -434,13 +432,11 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       }
     diag = nd ? diag / nd : inv2mu;
     for (int c = 0; c < L; ++c) {
-      if (!constrained[c])
-        continue;
+      if (!constrained[c]) continue;
       ++nConstrained;
       const double g = constrainedValue[c];
       for (int i = 0; i < L; ++i) {
-        if (i != c)
-          F[i] -= KK(i, c) * g;
+        if (i != c) F[i] -= KK(i, c) * g;
         KK(i, c) = 0.0;
         KK(c, i) = 0.0;
       }
@@ -451,8 +447,9 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
     const long long* g = S.elementDofs(e);
     std::copy(g, g + L, gids.begin());
     for (int i = 0; i < L; ++i) {
-      A.sumIntoGlobalValues(gids[i], Teuchos::ArrayView<const GO>(gids),
-                            Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
+      A.sumIntoGlobalValues(
+          gids[i], Teuchos::ArrayView<const GO>(gids),
+          Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
       b.sumIntoGlobalValue(gids[i], 0, F[i]);
     }
   }
@@ -465,8 +462,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
 
 Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::fieldMassMatrix() const
 {
-  if (!impl_->fieldMass.is_null())
-    return impl_->fieldMass;
+  if (!impl_->fieldMass.is_null()) return impl_->fieldMass;
   const auto& S = *space_;
   const int d = S.dim(), k = S.degree(), L = S.localSize();
   const int nDP = S.displacementBasisSize(), nCP = S.rotationBasisSize();
@@ -486,20 +482,23 @@ Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::fieldMassMatrix() const
         for (int bb = 0; bb < nDP; ++bb) {
           const double v = w * ev.displacement(a, q) * ev.displacement(bb, q);
           for (int i = 0; i < d; ++i)
-            K[static_cast<std::size_t>(S.displacementOffset(i) + a) * L + S.displacementOffset(i) + bb] += v;
+            K[static_cast<std::size_t>(S.displacementOffset(i) + a) * L + S.displacementOffset(i) +
+              bb] += v;
         }
       for (int a = 0; a < nCP; ++a)
         for (int bb = 0; bb < nCP; ++bb) {
           const double v = w * ev.rotation(a, q) * ev.rotation(bb, q);
           for (int c = 0; c < r; ++c)
-            K[static_cast<std::size_t>(S.rotationOffset(c) + a) * L + S.rotationOffset(c) + bb] += v;
+            K[static_cast<std::size_t>(S.rotationOffset(c) + a) * L + S.rotationOffset(c) + bb] +=
+                v;
         }
     }
     const long long* g = S.elementDofs(e);
     std::copy(g, g + L, gids.begin());
     for (int i = 0; i < L; ++i)
-      M->sumIntoGlobalValues(gids[i], Teuchos::ArrayView<const GO>(gids),
-                             Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
+      M->sumIntoGlobalValues(
+          gids[i], Teuchos::ArrayView<const GO>(gids),
+          Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
   }
   M->endAssembly();
   impl_->fieldMass = M;

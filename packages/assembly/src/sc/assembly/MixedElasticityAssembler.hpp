@@ -136,9 +136,9 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
 
 /// Energy norm of the stress error ‖A^{1/2}(σ − σ_h)‖ = (A(σ − σ_h), σ − σ_h)^{1/2}, summed over
 /// ranks: the norm in which the estimator's efficiency is measured (docs/theory.md).
-double computeStressEnergyError(const MixedElasticityAssembler& assembler, const MultiVector& solution,
-                                const core::ExactSolution& exact, const core::Material& material,
-                                const Teuchos::Comm<int>& comm);
+double computeStressEnergyError(const MixedElasticityAssembler& assembler,
+                                const MultiVector& solution, const core::ExactSolution& exact,
+                                const core::Material& material, const Teuchos::Comm<int>& comm);
 
 /// Cell averages of the solution on this rank's owned elements (in ownedElements() order), for
 /// output: σ (d×d row-major), von Mises stress, pressure −tr σ / d, u (d), θ (r).

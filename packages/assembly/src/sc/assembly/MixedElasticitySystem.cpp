@@ -22,8 +22,7 @@ class OptionalPhase {
 public:
   OptionalPhase(core::PhaseTimers* timers, const char* name)
   {
-    if (timers)
-      scope_.emplace(*timers, name);
+    if (timers) scope_.emplace(*timers, name);
   }
 
 private:
@@ -36,7 +35,7 @@ MixedElasticitySystem::MixedElasticitySystem(Teuchos::RCP<const mesh::SimplexMes
                                              Teuchos::RCP<const Teuchos::Comm<int>> comm,
                                              Teuchos::RCP<const mesh::CurvedElements> curved,
                                              core::PhaseTimers* timers)
-  : comm_(std::move(comm)), timers_(timers)
+    : comm_(std::move(comm)), timers_(timers)
 {
   {
     OptionalPhase t(timers_, "partition");
@@ -50,7 +49,7 @@ MixedElasticitySystem::MixedElasticitySystem(Teuchos::RCP<const mesh::SimplexMes
                                              Teuchos::RCP<const Teuchos::Comm<int>> comm,
                                              Teuchos::RCP<const mesh::CurvedElements> curved,
                                              core::PhaseTimers* timers)
-  : comm_(std::move(comm)), timers_(timers), elementOwner_(std::move(elementOwner))
+    : comm_(std::move(comm)), timers_(timers), elementOwner_(std::move(elementOwner))
 {
   setupSpace(std::move(mesh), degree, std::move(curved));
 }
@@ -67,8 +66,7 @@ void MixedElasticitySystem::setupSpace(Teuchos::RCP<const mesh::SimplexMesh> mes
 
 void MixedElasticitySystem::setupAssembler()
 {
-  if (assembler_)
-    return;
+  if (assembler_) return;
   OptionalPhase t(timers_, "setup");
   assembler_ = std::make_unique<MixedElasticityAssembler>(space_, comm_);
 }
@@ -102,8 +100,9 @@ void MixedElasticitySystem::prepareSolver(solvers::LinearSolver& solver,
   }
 }
 
-Teuchos::RCP<MultiVector> MixedElasticitySystem::solve(
-    solvers::LinearSolver& solver, std::vector<solvers::MultigridLevel> multigrid) const
+Teuchos::RCP<MultiVector>
+MixedElasticitySystem::solve(solvers::LinearSolver& solver,
+                             std::vector<solvers::MultigridLevel> multigrid) const
 {
   OptionalPhase t(timers_, "solve");
   prepareSolver(solver, std::move(multigrid));

@@ -15,10 +15,11 @@
 
 namespace sc::assembly {
 
-ElementSolution::ElementSolution(const MixedElasticityAssembler& assembler, const MultiVector& solution)
-  : space_(assembler.space()), overlapMap_(assembler.overlapMap()),
-    overlap_(assembler.toOverlap(solution)), x_(overlap_->getData(0)),
-    c_(static_cast<std::size_t>(assembler.space().localSize()))
+ElementSolution::ElementSolution(const MixedElasticityAssembler& assembler,
+                                 const MultiVector& solution)
+    : space_(assembler.space()), overlapMap_(assembler.overlapMap()),
+      overlap_(assembler.toOverlap(solution)), x_(overlap_->getData(0)),
+      c_(static_cast<std::size_t>(assembler.space().localSize()))
 {
 }
 
@@ -96,8 +97,7 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
         local[0] += w * err[i] * err[i];
         local[4] += w * sigma[i] * sigma[i];
       }
-      if (material)
-        local[8] += w * material->complianceEnergyDensity(err, d);
+      if (material) local[8] += w * material->complianceEnergyDensity(err, d);
       for (int i = 0; i < d; ++i) {
         local[1] += w * std::pow(-f[i] - v.divSigma[i], 2);  // div σ = −f
         local[5] += w * f[i] * f[i];
@@ -124,9 +124,9 @@ ErrorNorms computeErrors(const MixedElasticityAssembler& assembler, const MultiV
   return n;
 }
 
-double computeStressEnergyError(const MixedElasticityAssembler& assembler, const MultiVector& solution,
-                                const core::ExactSolution& exact, const core::Material& material,
-                                const Teuchos::Comm<int>& comm)
+double computeStressEnergyError(const MixedElasticityAssembler& assembler,
+                                const MultiVector& solution, const core::ExactSolution& exact,
+                                const core::Material& material, const Teuchos::Comm<int>& comm)
 {
   return computeErrors(assembler, solution, exact, comm, &material).stressEnergy;
 }

@@ -27,11 +27,9 @@ std::vector<BoundaryForce> computeBoundaryForces(const MixedElasticityAssembler&
     bool gathered = false;
     for (int lf = 0; lf <= d; ++lf) {
       const int f = m.elementFaces(e)[lf];
-      if (!m.isBoundaryFace(f))
-        continue;
+      if (!m.isBoundaryFace(f)) continue;
       const int part = m.faceBoundaryId(f);
-      if (part < 0 || part >= parts)
-        continue;
+      if (part < 0 || part >= parts) continue;
       if (!gathered) {
         sol.gather(e);
         gathered = true;

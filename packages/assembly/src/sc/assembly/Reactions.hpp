@@ -16,8 +16,9 @@ namespace sc::assembly {
 
 /// The resultant of σ_h n on one boundary part of the mesh, summed over ranks.
 struct BoundaryForce {
-  std::string part;              ///< the mesh's name of the part
-  std::array<double, 3> force{};  ///< ∫ σ_h n ds: the force the part's support or load exerts on the body
+  std::string part;  ///< the mesh's name of the part
+  std::array<double, 3>
+      force{};  ///< ∫ σ_h n ds: the force the part's support or load exerts on the body
   /// ∫ (x − x₀) × σ_h n ds about the moment point x₀: 3 components in 3D; in 2D the z component
   /// in moment[2] (about the axis through (x₀, y₀) normal to the plane), moment[0] = moment[1] = 0.
   std::array<double, 3> moment{};

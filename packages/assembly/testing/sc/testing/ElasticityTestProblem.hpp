@@ -46,7 +46,7 @@ struct VerificationSetup {
   double nu = 0.3;
   double E = 1.0;
   std::string exact = "Manufactured smooth";
-  double wavenumber = M_PI;  ///< ω of the manufactured solution
+  double wavenumber = M_PI;     ///< ω of the manufactured solution
   std::string solver = "KLU2";  ///< Linear Solver/Type: KLU2, MUMPS, Iterative
   /// Extra entries of the "Linear Solver" list (e.g. the Iterative sublist).
   Teuchos::ParameterList solverOptions;
@@ -74,14 +74,17 @@ using LevelCallback = std::function<void(int level, const assembly::MixedElastic
                                          const Tpetra::MultiVector<>& solution,
                                          const assembly::ElasticityData& data)>;
 
-/// Boundary data: displacement from the exact solution on Left/Bottom(/Front), traction on the rest.
+/// Boundary data: displacement from the exact solution on Left/Bottom(/Front), traction on the
+/// rest.
 inline core::BoundaryConditions verificationBoundaryConditions(int dim)
 {
   core::BoundaryConditions bcs;
-  const std::vector<std::string> dirichlet = dim == 2 ? std::vector<std::string>{"Left", "Bottom"}
-                                                      : std::vector<std::string>{"Left", "Bottom", "Front"};
-  const std::vector<std::string> neumann = dim == 2 ? std::vector<std::string>{"Right", "Top"}
-                                                    : std::vector<std::string>{"Right", "Top", "Back"};
+  const std::vector<std::string> dirichlet =
+      dim == 2 ? std::vector<std::string>{"Left", "Bottom"}
+               : std::vector<std::string>{"Left", "Bottom", "Front"};
+  const std::vector<std::string> neumann = dim == 2
+                                               ? std::vector<std::string>{"Right", "Top"}
+                                               : std::vector<std::string>{"Right", "Top", "Back"};
   for (const auto& n : dirichlet)
     bcs.conditions.push_back({n, core::BoundaryType::Displacement, {}, true});
   for (const auto& n : neumann)
@@ -89,28 +92,27 @@ inline core::BoundaryConditions verificationBoundaryConditions(int dim)
   return bcs;
 }
 
-inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
-                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                                                  const LevelCallback& onLevel = {})
+inline std::vector<LevelResult>
+solveVerification(const VerificationSetup& s, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                  const LevelCallback& onLevel = {})
 {
   Teuchos::ParameterList meshList;
   meshList.set("Source", s.source);
-  if (!s.file.empty())
-    meshList.set("File", s.file);
+  if (!s.file.empty()) meshList.set("File", s.file);
   meshList.set("Initial mesh size", s.meshSize);
   meshList.set("Uniform refinements", s.initialRefinements);
   auto refiner = mesh::MeshFactory::build(meshList, s.dim);
   core::Material material{s.E, s.nu};
   std::shared_ptr<const core::ExactSolution> exact =
-      s.exactOverride ? s.exactOverride : std::shared_ptr<const core::ExactSolution>(
-                                              core::createExactSolution(s.exact, s.dim, material, s.wavenumber));
+      s.exactOverride ? s.exactOverride
+                      : std::shared_ptr<const core::ExactSolution>(
+                            core::createExactSolution(s.exact, s.dim, material, s.wavenumber));
   Teuchos::ParameterList solverList(s.solverOptions);
   solverList.set("Type", s.solver);
   auto solver = solvers::createLinearSolver(solverList);
   std::vector<LevelResult> results;
   solvers::StressHierarchy hierarchy(s.degree, comm);
-  if (s.multigrid)
-    hierarchy.addMesh(refiner->mesh(), {});
+  if (s.multigrid) hierarchy.addMesh(refiner->mesh(), {});
   for (int level = 0; level < s.levels; ++level) {
     const mesh::RefinementStep* step = nullptr;
     if (s.multigrid) {
@@ -127,16 +129,15 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
       curved = Teuchos::rcp(new mesh::CurvedElements(m, *refiner->geometry()));
     // The application's pipeline: partition, spaces, assembly, and the solve with the solver
     // prepared as the application prepares it (physical scaling; block structure for Krylov).
-    auto system = s.allOnRankZero
-                      ? std::make_unique<assembly::MixedElasticitySystem>(
-                            m, s.degree, std::vector<int>(m->numElements(), 0), comm, curved)
-                      : std::make_unique<assembly::MixedElasticitySystem>(m, s.degree, comm, curved);
+    auto system =
+        s.allOnRankZero
+            ? std::make_unique<assembly::MixedElasticitySystem>(
+                  m, s.degree, std::vector<int>(m->numElements(), 0), comm, curved)
+            : std::make_unique<assembly::MixedElasticitySystem>(m, s.degree, comm, curved);
     const auto& space = system->space();
-    if (s.multigrid)
-      hierarchy.addMesh(m, step->elementParent);
+    if (s.multigrid) hierarchy.addMesh(m, step->elementParent);
     assembly::ElasticityData data{material, verificationBoundaryConditions(s.dim), exact.get()};
-    if (!s.boundaryConditions.empty())
-      data.boundaryConditions.conditions = s.boundaryConditions;
+    if (!s.boundaryConditions.empty()) data.boundaryConditions.conditions = s.boundaryConditions;
     system->assemble(data);
     const auto& assembler = system->assembler();
     auto x = system->solve(*solver, s.multigrid ? hierarchy.levels(space)
@@ -148,10 +149,8 @@ inline std::vector<LevelResult> solveVerification(const VerificationSetup& s,
     // level, unlike the largest diameter (3D bisection leaves long edges for a while).
     r.h = std::pow(m->measure() / m->numElements(), 1.0 / s.dim);
     r.dofs = space.numGlobalDofs();
-    if (exact)
-      r.errors = assembly::computeErrors(assembler, *x, *exact, *comm);
-    if (onLevel)
-      onLevel(level, assembler, *x, data);
+    if (exact) r.errors = assembly::computeErrors(assembler, *x, *exact, *comm);
+    if (onLevel) onLevel(level, assembler, *x, data);
     results.push_back(r);
   }
   return results;

@@ -26,15 +26,16 @@
 
 namespace sc::contact {
 
-
 Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
 {
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Newton"));
     core::declareInt(*pl, "Maximum iterations", 50,
-                     "Semismooth Newton (active-set) steps before giving up with an error.", 1, 10000);
+                     "Semismooth Newton (active-set) steps before giving up with an error.", 1,
+                     10000);
     core::declareReal(*pl, "Penalty factor", 1.0,
-                      "Factor on c = 2μ/(h_F |F|) (docs/theory.md §\"Contact and friction\"). The solution does not depend on c; "
+                      "Factor on c = 2μ/(h_F |F|) (docs/theory.md §\"Contact and friction\"). The "
+                      "solution does not depend on c; "
                       "a very large c can make Coulomb cycle.",
                       0.0, true, core::kInfinity, false);
     core::declareInt(*pl, "Maximum remedies", 5,
@@ -46,13 +47,15 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
                         "3D Coulomb slip rows: the Newton linearisation of the friction disc "
                         "(Hueber, Stadler, Wohlmuth 2008), or the slip direction of the last step "
                         "frozen (a fixed point: converges linearly, many more steps).");
-    core::declareChoice(*pl, "Coulomb method", "Newton, fixed point fallback",
-                        {"Newton, fixed point fallback", "Newton", "Fixed point"},
-                        "Coulomb friction: semismooth Newton (falling back to the fixed point if it "
-                        "does not converge), Newton only (error if it does not converge), or the "
-                        "fixed point on the friction bound (a Tresca problem per outer step).");
+    core::declareChoice(
+        *pl, "Coulomb method", "Newton, fixed point fallback",
+        {"Newton, fixed point fallback", "Newton", "Fixed point"},
+        "Coulomb friction: semismooth Newton (falling back to the fixed point if it "
+        "does not converge), Newton only (error if it does not converge), or the "
+        "fixed point on the friction bound (a Tresca problem per outer step).");
     core::declareInt(*pl, "Maximum fixed-point iterations", 50,
-                     "Outer steps of the Coulomb fixed point before giving up with an error.", 1, 10000);
+                     "Outer steps of the Coulomb fixed point before giving up with an error.", 1,
+                     10000);
     core::declareReal(*pl, "Fixed-point tolerance", 1e-8,
                       "The fixed point stops when max|Δs_p| <= tolerance × max s_p (s = μ|σ_N|).",
                       0.0, true, 1.0, false);
@@ -63,12 +66,13 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
                         "stresses) of at most 'Balance fraction' × η_CF of the previous cycle "
                         "(docs/theory.md §\"Solves balanced with the discretisation error\"). "
                         "The Newton loop stops on a settled active set either way.");
-    core::declareReal(*pl, "Balance fraction", 1e-3,
-                      "Stopping = Balanced: the fraction γ of η_CF that the estimated algebraic "
-                      "error may reach. The default keeps the load, the half-width and the peak "
-                      "pressure as accurate as with the fixed tolerance (they converge faster than "
-                      "η_CF; docs/performance.md \"Solves balanced with the discretisation error\").",
-                      0.0, true, 1.0, false);
+    core::declareReal(
+        *pl, "Balance fraction", 1e-3,
+        "Stopping = Balanced: the fraction γ of η_CF that the estimated algebraic "
+        "error may reach. The default keeps the load, the half-width and the peak "
+        "pressure as accurate as with the fixed tolerance (they converge faster than "
+        "η_CF; docs/performance.md \"Solves balanced with the discretisation error\").",
+        0.0, true, 1.0, false);
     return pl;
   }();
   return valid;
@@ -106,14 +110,12 @@ std::array<double, 3> fitAffineOnFace(const std::vector<const double*>& c,
         a[i] -= ab * b[i];
     }
     const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (norm <= 1e-8 * scale)
-      continue;
+    if (norm <= 1e-8 * scale) continue;
     for (double& ai : a)
       ai /= norm;
     e.push_back(a);
   }
-  if (scale == 0.0 || static_cast<int>(e.size()) < d - 1)
-    return mean;
+  if (scale == 0.0 || static_cast<int>(e.size()) < d - 1) return mean;
   // Normal equations in the face coordinates s = E (x − c̄): (Σ s sᵀ) g_i = Σ s (v_i − v̄_i).
   const int k = d - 1;
   auto coords = [&](const double* y) {
@@ -136,15 +138,13 @@ std::array<double, 3> fitAffineOnFace(const std::vector<const double*>& c,
   const auto sx = coords(x);
   std::array<double, 3> out = mean;
   if (k == 1) {
-    if (S[0][0] <= 0.0)
-      return mean;
+    if (S[0][0] <= 0.0) return mean;
     for (int i = 0; i < d; ++i)
       out[i] += sx[0] * rhs[i][0] / S[0][0];
     return out;
   }
   const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
-  if (std::abs(det) <= 1e-12 * (S[0][0] * S[1][1]))
-    return mean;
+  if (std::abs(det) <= 1e-12 * (S[0][0] * S[1][1])) return mean;
   for (int i = 0; i < d; ++i) {
     const double g0 = (S[1][1] * rhs[i][0] - S[0][1] * rhs[i][1]) / det;
     const double g1 = (S[0][0] * rhs[i][1] - S[1][0] * rhs[i][0]) / det;
@@ -158,7 +158,8 @@ std::array<double, 3> barycentric(const std::array<const double*, 3>& v, const d
 {
   if (d == 2) {
     double e[2] = {v[1][0] - v[0][0], v[1][1] - v[0][1]};
-    const double t = ((y[0] - v[0][0]) * e[0] + (y[1] - v[0][1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]);
+    const double t =
+        ((y[0] - v[0][0]) * e[0] + (y[1] - v[0][1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]);
     return {1.0 - t, t, 0.0};
   }
   double e1[3], e2[3], r[3];
@@ -167,8 +168,11 @@ std::array<double, 3> barycentric(const std::array<const double*, 3>& v, const d
     e2[i] = v[2][i] - v[0][i];
     r[i] = y[i] - v[0][i];
   }
-  auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2), b1 = dot(r, e1), b2 = dot(r, e2);
+  auto dot = [](const double* a, const double* b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  };
+  const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2), b1 = dot(r, e1),
+               b2 = dot(r, e2);
   const double det = a11 * a22 - a12 * a12;
   const double l1 = (b1 * a22 - b2 * a12) / det, l2 = (a11 * b2 - a12 * b1) / det;
   return {1.0 - l1 - l2, l1, l2};
@@ -200,8 +204,7 @@ bool useBernsteinConstraints(int dim, int /*degree*/, bool curvedFaces)
   // can be negative next to a vertex that touches the obstacle although g ≥ 0 on the face (a
   // zero load gave a contact force of 6% of the loaded one on the deck's mesh); B_p ≥ 0 gives
   // G_p ≥ 0 for any g ≥ 0 (docs/contact.md "Curved contact faces").
-  if (curvedFaces)
-    return true;
+  if (curvedFaces) return true;
   // 2D: the DOF points' dual weights ℓ_p have non-negative moments against the face's
   // barycentric coordinates (min 0 at k = 1, 0.067, 0.013, 0.017 at k = 2, 3, 4), so a
   // non-negative linear gap has a non-negative weighted gap; the point constraints are verified
@@ -225,19 +228,27 @@ void checkContactDegree(int dim, int degree)
   // 3D k = 4 has positive weights but no verification (a Hertz 3D run at k = 4 that resolves the
   // zone needs millions of DOFs): rejected rather than trusted untested.
   SC_THROW_IF(dim == 3 && degree > 2, core::InputError,
-              "'Discretization/Degree' = " << degree << " with contact in 3D is not verified "
-                  "(the Hertz 3D tests cover k = 1, 2). Valid with contact: 1, 2 "
-                  "(docs/contact.md, 'Degree').");
+              "'Discretization/Degree' = "
+                  << degree
+                  << " with contact in 3D is not verified "
+                     "(the Hertz 3D tests cover k = 1, 2). Valid with contact: 1, 2 "
+                     "(docs/contact.md, 'Degree').");
 }
 
 void checkCurvedContact(int dim, int degree, ContactFrame frame)
 {
   // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
   SC_THROW_IF((dim == 2 && degree > 2) || (dim == 3 && degree > 1), core::InputError,
-              "'Discretization/Degree' = " << degree << " with contact on curved faces "
-                  "('Mesh/Geometry order' = 2) in " << dim << "D is not verified (the Hertz tests "
-                  "cover k = " << (dim == 2 ? "1, 2" : "1") << " there). Set 'Mesh/Geometry "
-                  "order' = 1 (straight faces, verified for this degree) or a degree of "
+              "'Discretization/Degree' = "
+                  << degree
+                  << " with contact on curved faces "
+                     "('Mesh/Geometry order' = 2) in "
+                  << dim
+                  << "D is not verified (the Hertz tests "
+                     "cover k = "
+                  << (dim == 2 ? "1, 2" : "1")
+                  << " there). Set 'Mesh/Geometry "
+                     "order' = 1 (straight faces, verified for this degree) or a degree of "
                   << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
   SC_THROW_IF(frame == ContactFrame::BodyNormal, core::InputError,
               "'Contact/Frame' = 'Body normal' is not available on curved contact faces "
@@ -248,12 +259,11 @@ void checkCurvedContact(int dim, int degree, ContactFrame frame)
 }
 
 ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
-                                 const ContactSettings& settings,
-                                 const core::Material& material,
+                                 const ContactSettings& settings, const core::Material& material,
                                  const std::vector<std::string>& contactBoundaries,
                                  Teuchos::RCP<const Teuchos::Comm<int>> comm)
-  : space_(space), settings_(settings), comm_(std::move(comm)),
-    obstacle_(createObstacle(settings, space.dim()))
+    : space_(space), settings_(settings), comm_(std::move(comm)),
+      obstacle_(createObstacle(settings, space.dim()))
 {
   const auto& m = space.mesh();
   const int d = m.dim();
@@ -272,11 +282,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   if (space.curvedElements()) {
     bool curvedContact = false;
     for (int f : m.boundaryFaces())
-      curvedContact = curvedContact ||
-                      (std::find(contactIds.begin(), contactIds.end(), m.faceBoundaryId(f)) != contactIds.end() &&
-                       space.isCurved(m.faceElements(f)[0]));
-    if (curvedContact)
-      checkCurvedContact(d, space.degree(), settings.frame);
+      curvedContact = curvedContact || (std::find(contactIds.begin(), contactIds.end(),
+                                                  m.faceBoundaryId(f)) != contactIds.end() &&
+                                        space.isCurved(m.faceElements(f)[0]));
+    if (curvedContact) checkCurvedContact(d, space.degree(), settings.frame);
   }
   double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
   disc::FaceValues fv(space, 2 * space.degree() + 2);
@@ -303,8 +312,7 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
           // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
           int axis = 0;
           for (int i = 1; i < 3; ++i)
-            if (std::abs(n[i]) < std::abs(n[axis]))
-              axis = i;
+            if (std::abs(n[i]) < std::abs(n[axis])) axis = i;
           std::array<double, 3> a{0, 0, 0};
           a[axis] = 1.0;
           const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
@@ -315,7 +323,8 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
           }
           for (double& c : t1)
             c /= std::sqrt(norm);
-          t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
+          t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
+                n[0] * t1[1] - n[1] * t1[0]};
         }
         return fr;
       };
@@ -343,9 +352,10 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
       cf.V.assign(static_cast<std::size_t>(nq) * nq, 0.0);
       for (int q = 0; q < nq; ++q)
         for (int pp = 0; pp < nq; ++pp)
-          cf.V[q * nq + pp] = bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].xAffine.data(), d),
-                                                     space.degree())
-                                         : (q == pp ? 1.0 : 0.0);
+          cf.V[q * nq + pp] =
+              bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].xAffine.data(), d),
+                                     space.degree())
+                         : (q == pp ? 1.0 : 0.0);
       cf.Vinv = bernstein_ ? invert(cf.V, nq) : cf.V;
       for (int pp = 0; pp < nq; ++pp) {
         ContactPoint p;
@@ -393,7 +403,8 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
   // faces (they must agree: the ratio is affine-invariant).
   const double globalMin = core::minOverRanks(*comm_, minRelativeWeight);
   SC_THROW_IF(globalMin <= 1e-10, core::InternalError,
-              "a contact point of RT_" << space.degree() << " in " << d
+              "a contact point of RT_"
+                  << space.degree() << " in " << d
                   << "D has a non-positive weight (min ∫_F L_p / |F| = " << globalMin
                   << ") although checkContactDegree accepted the degree.");
 }
@@ -433,8 +444,7 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
   }
   const auto all = core::gatherAllConcatenated(*comm_, mine);
   const std::size_t n = all.size() / stride;
-  if (n == 0 || parentFace.empty())
-    return;  // no history (first cycle): every point starts free
+  if (n == 0 || parentFace.empty()) return;  // no history (first cycle): every point starts free
   // The previous points grouped by face: (face, position in `all`), sorted.
   std::vector<std::pair<int, std::size_t>> byFace(n);
   for (std::size_t k = 0; k < n; ++k)
@@ -442,24 +452,25 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
   std::sort(byFace.begin(), byFace.end());
   const auto& m = space_.mesh();
   SC_THROW_IF(parentFace.size() != static_cast<std::size_t>(m.numFaces()), core::InternalError,
-              "ActiveSetSolver::transferState: " << parentFace.size() << " parent faces for a mesh of "
-                                                 << m.numFaces() << " faces");
+              "ActiveSetSolver::transferState: " << parentFace.size()
+                                                 << " parent faces for a mesh of " << m.numFaces()
+                                                 << " faces");
   // Preference among previous points at the same distance (a new vertex halfway between two
   // control points, 3D): a contact state over free, stick over slip, then the lower index
   // within the parent face (fixed by the mesh, so the start does not depend on the rank count).
   // (Measured on the run_hertz3d_adaptive run, 2026-12-01: 21 Newton steps over cycles 0-6; with
   // free winning instead, 22.)
   auto preference = [](int status) {
-    return status == static_cast<int>(PointStatus::Stick) ? 2
+    return status == static_cast<int>(PointStatus::Stick)  ? 2
            : status == static_cast<int>(PointStatus::Slip) ? 1
                                                            : 0;
   };
   for (auto& p : points_) {
     const int parent = parentFace[p.face];
-    if (parent < 0)
-      continue;
-    const auto range = std::equal_range(byFace.begin(), byFace.end(), std::make_pair(parent, std::size_t{0}),
-                                        [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (parent < 0) continue;
+    const auto range =
+        std::equal_range(byFace.begin(), byFace.end(), std::make_pair(parent, std::size_t{0}),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
     if (range.first == range.second)
       continue;  // the parent face had no points (it was not a contact face): start free
     // Distances to the parent face's points; "equal" within 1e-8 of the largest (the face's
@@ -480,8 +491,7 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
     std::size_t chosen = dist.front().second;
     bool found = false;
     for (const auto& [d2, k] : dist) {
-      if (d2 > best + 1e-8 * far)
-        continue;
+      if (d2 > best + 1e-8 * far) continue;
       if (!found) {
         chosen = k, found = true;
         continue;
@@ -515,8 +525,7 @@ void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
         double d2 = 0.0;
         for (int i = 0; i < d; ++i)
           d2 += (cq[q][i] - p.centroid[i]) * (cq[q][i] - p.centroid[i]);
-        if (d2 <= 1e-20 * far)
-          same = vq[q];
+        if (d2 <= 1e-20 * far) same = vq[q];
       }
       const auto v = same ? std::array<double, 3>{same[0], same[1], d == 3 ? same[2] : 0.0}
                           : fitAffineOnFace(cq, vq, d, p.centroid.data());
@@ -544,8 +553,7 @@ void ActiveSetSolver::evaluate(const CrsMatrix& K, const MultiVector& b, const M
     double t[3] = {0, 0, 0}, r[3] = {0, 0, 0};
     for (int q = 0; q < cf.m; ++q) {
       const double vinv = cf.Vinv[p.index * cf.m + q], v = cf.V[q * cf.m + p.index];
-      if (vinv == 0.0 && v == 0.0)
-        continue;
+      if (vinv == 0.0 && v == 0.0) continue;
       for (int i = 0; i < d; ++i) {
         const auto lid = map.getLocalElement(cf.gids[q][i]);
         t[i] += vinv * cf.scale[q] * xv[lid];
@@ -585,7 +593,8 @@ int ActiveSetSolver::updateState(bool flipToStick)
         const double bound = tresca ? trescaBound(p) : mu * std::max(0.0, -aug);
         // Load steps: the slip increment r_T − r_T^{n−1} (zero history in the first step).
         const auto r0 = p.previousRT();
-        double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]), p.sigmaT[1] - p.c * (p.rT[1] - r0[1])},
+        double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]),
+                       p.sigmaT[1] - p.c * (p.rT[1] - r0[1])},
                norm = 0.0;
         for (int k = 0; k < nt; ++k)
           norm += z[k] * z[k];
@@ -632,18 +641,21 @@ ActiveSetSolver::constraintRows(const ContactPoint& p) const
   std::array<ConstraintRow, 3> rows;
   // Frame vectors per equation: row 0 normal, rows 1.. tangential.
   const std::array<const std::array<double, 3>*, 3> frame = {&p.n, &p.t1, &p.t2};
-  // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (docs/theory.md §"Contact and friction"), with
-  // z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last iterate k, ξ = z/|z|,
-  // σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k I)/|z^k|:
+  // 3D Coulomb slip: Hüeber–Stadler–Wohlmuth linearisation of |z|σ_T = s z (docs/theory.md
+  // §"Contact and friction"), with z = σ_T − c r_T, s = μ max(0, −(σ_N − c(r_N − G))) at the last
+  // iterate k, ξ = z/|z|, σ̃ = σ_T^k projected onto the disc of radius s^k, M = (σ̃ ξᵀ − s^k
+  // I)/|z^k|:
   //   (I + M) σ_T − c M r_T + μ ξ σ_N − μ c ξ r_N = σ̃ − s^k ξ − μ c ξ G.
   // Frozen ξ (σ_T = −μ ξ σ_N) is the fallback when |z^k| or s^k vanish (a point that has not
   // been evaluated in contact yet).
-  const bool hsw = settings_.newton.hueberStadlerWohlmuth && d == 3 && friction && !tresca && p.status == PointStatus::Slip;
+  const bool hsw = settings_.newton.hueberStadlerWohlmuth && d == 3 && friction && !tresca &&
+                   p.status == PointStatus::Slip;
   double hswM[2][2] = {{0, 0}, {0, 0}}, hswRhs[2] = {0, 0};
   bool hswRow = false;
   const auto r0 = p.previousRT();  // r_T^{n−1} of load steps (zero in the first step)
   if (hsw) {
-    const double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]), p.sigmaT[1] - p.c * (p.rT[1] - r0[1])};
+    const double z[2] = {p.sigmaT[0] - p.c * (p.rT[0] - r0[0]),
+                         p.sigmaT[1] - p.c * (p.rT[1] - r0[1])};
     const double zn = std::hypot(z[0], z[1]);
     const double bound = mu * std::max(0.0, -(p.sigmaN - p.c * (p.rN - p.gap)));
     if (zn > 0.0 && bound > 0.0) {
@@ -679,7 +691,8 @@ ActiveSetSolver::constraintRows(const ContactPoint& p) const
         for (int i = 0; i < d; ++i) {
           beta[i] = (1.0 + hswM[k][k]) * (k == 0 ? p.t1[i] : p.t2[i]) +
                     hswM[k][1 - k] * (k == 0 ? p.t2[i] : p.t1[i]) + mu * p.direction[k] * p.n[i];
-          alpha[i] = -p.c * (hswM[k][0] * p.t1[i] + hswM[k][1] * p.t2[i] + mu * p.direction[k] * p.n[i]);
+          alpha[i] =
+              -p.c * (hswM[k][0] * p.t1[i] + hswM[k][1] * p.t2[i] + mu * p.direction[k] * p.n[i]);
         }
         gamma = hswRhs[k];
       } else if (p.status == PointStatus::Stick) {
@@ -718,12 +731,11 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
   // The points of each face block replace the face's rows together: new row (r, p) goes into the
   // slot of DOF row (q = p, i = r). Every row is
   //   Σ_i α_i ρ_{i,p} + Σ_i β_i τ_{i,p} = γ,
-  // with ρ_{i,p} = Σ_q V(q,p)(K x − b)_{q,i}/s_q (dual: rows of K) and τ_{i,p} = Σ_q V⁻¹(p,q) s_q x_{q,i}
-  // (traction: columns of the face DOFs), written in the frame (n, t1[, t2]).
+  // with ρ_{i,p} = Σ_q V(q,p)(K x − b)_{q,i}/s_q (dual: rows of K) and τ_{i,p} = Σ_q V⁻¹(p,q) s_q
+  // x_{q,i} (traction: columns of the face DOFs), written in the frame (n, t1[, t2]).
   std::vector<int> first(faces_.size(), -1);
   for (std::size_t k = 0; k < points_.size(); ++k)
-    if (first[points_[k].block] < 0)
-      first[points_[k].block] = static_cast<int>(k);
+    if (first[points_[k].block] < 0) first[points_[k].block] = static_cast<int>(k);
   for (std::size_t blk = 0; blk < faces_.size(); ++blk) {
     const ContactFace& cf = faces_[blk];
     const int m = cf.m;
@@ -739,12 +751,12 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
         CrsMatrix::local_inds_host_view_type inds;
         CrsMatrix::values_host_view_type v;
         K.getLocalRowView(lid[q][i], inds, v);
-        if (pattern.empty())
-          pattern.assign(inds.data(), inds.data() + inds.extent(0));
+        if (pattern.empty()) pattern.assign(inds.data(), inds.data() + inds.extent(0));
         SC_THROW_IF(inds.extent(0) != pattern.size() ||
                         !std::equal(pattern.begin(), pattern.end(), inds.data()),
-                    core::InternalError, "the stress rows of contact face " << points_[first[blk]].face
-                                             << " have different column patterns");
+                    core::InternalError,
+                    "the stress rows of contact face " << points_[first[blk]].face
+                                                       << " have different column patterns");
         rowVals[q * d + i].assign(v.data(), v.data() + v.extent(0));
       }
     auto position = [&](LO col) {
@@ -769,16 +781,16 @@ ActiveSetSolver::modifiedMatrix(const CrsMatrix& K, MultiVector& rhs, const Mult
                 newVals[c] += alpha[i] * v * row[c];
               newRhs += alpha[i] * v * bData[lid[q][i]];
             }
-            if (beta[i] != 0.0 && vinv != 0.0)
-              newVals[position(colLid[q][i])] += beta[i] * vinv;
+            if (beta[i] != 0.0 && vinv != 0.0) newVals[position(colLid[q][i])] += beta[i] * vinv;
           }
         }
         // Scale to the size of the row the new one replaces: a dual row (combination of K rows
         // over s) by the mean |s_q|; a row with a traction part by |K_diag|/mean |s_q|, so that the
         // system's rows stay comparable under any E.
         const LO slot = lid[pp][r];
-        const double w = traction ? std::abs(rowVals[pp * d + r][position(colLid[pp][r])]) / cf.meanScale
-                                  : cf.meanScale;
+        const double w = traction
+                             ? std::abs(rowVals[pp * d + r][position(colLid[pp][r])]) / cf.meanScale
+                             : cf.meanScale;
         for (double& v : newVals)
           v *= w;
         A->replaceLocalValues(slot, Teuchos::ArrayView<const LO>(pattern),
@@ -801,8 +813,7 @@ void ActiveSetSolver::startNearestPointsInContact()
   }
   globalActive = core::sumOverRanks(*comm_, active);
   globalNearest = core::minOverRanks(*comm_, nearest);
-  if (globalActive > 0)
-    return;
+  if (globalActive > 0) return;
   // The mean gap, not the gap at the point: the weighted gap G_p is what the contact row
   // prescribes (r_N = G_p), and the weights are positive (checked in the constructor).
   for (auto& p : points_)
@@ -831,8 +842,8 @@ double ActiveSetSolver::trescaBound(const ContactPoint& p) const
   return fixedPoint_ ? p.frictionBound : settings_.trescaBound;
 }
 
-void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
-                            solvers::LinearSolver& solver, MultiVector& x)
+void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
+                            MultiVector& x)
 {
   fixedPoint_ = false;
   const bool coulomb = settings_.needsFriction() && settings_.frictionLaw == FrictionLaw::Coulomb;
@@ -851,8 +862,9 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
                   << "); falling back to the Coulomb fixed point" << std::endl;
     }
   }
-  // Coulomb as a fixed point on the friction bound (docs/theory.md §"Contact and friction" fallback): Tresca problems with
-  // s_p = μ max(0, −σ_N,p) of the previous outer iterate, until s settles.
+  // Coulomb as a fixed point on the friction bound (docs/theory.md §"Contact and friction"
+  // fallback): Tresca problems with s_p = μ max(0, −σ_N,p) of the previous outer iterate, until s
+  // settles.
   const auto first = stats_;
   int outer = 0, total = 0;
   fixedPoint_ = true;
@@ -871,8 +883,8 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
     double local[2] = {change, size}, global[2];
     core::maxOverRanks(*comm_, 2, local, global);
     if (stepCallback_ && comm_->getRank() == 0)
-      std::cout << "  contact: fixed point " << outer << ": bound change " << global[0] / std::max(global[1], 1e-300)
-                << " (relative)" << std::endl;
+      std::cout << "  contact: fixed point " << outer << ": bound change "
+                << global[0] / std::max(global[1], 1e-300) << " (relative)" << std::endl;
     if (global[0] <= settings_.newton.fixedPointTolerance * global[1]) {
       fixedPoint_ = false;
       stats_.newtonIterations = total;
@@ -886,7 +898,8 @@ void ActiveSetSolver::solve(const CrsMatrix& K, const MultiVector& b,
   stats_.converged = false;
   stats_.fixedPointIterations = settings_.newton.maxFixedPointIterations;
   SC_THROW_IF(true, core::ConvergenceError,
-              "the Coulomb fixed point did not settle in " << settings_.newton.maxFixedPointIterations
+              "the Coulomb fixed point did not settle in "
+                  << settings_.newton.maxFixedPointIterations
                   << " outer steps ('Contact/Newton/Maximum fixed-point iterations').");
 }
 
@@ -896,13 +909,12 @@ namespace {
 class StressBasisScope {
 public:
   explicit StressBasisScope(solvers::LinearSolver& solver)
-    : solver_(solver), saved_(solver.blockStructure())
+      : solver_(solver), saved_(solver.blockStructure())
   {
   }
   ~StressBasisScope()
   {
-    if (set_)
-      solver_.setBlockStructure(saved_);
+    if (set_) solver_.setBlockStructure(saved_);
   }
   void set(const Teuchos::RCP<const Tpetra::CrsMatrix<>>& basis)
   {
@@ -919,8 +931,8 @@ private:
 };
 }  // namespace
 
-int ActiveSetSolver::linearSolve(solvers::LinearSolver& solver, const MultiVector& rhs, MultiVector& x,
-                                 const CrsMatrix& energy)
+int ActiveSetSolver::linearSolve(solvers::LinearSolver& solver, const MultiVector& rhs,
+                                 MultiVector& x, const CrsMatrix& energy)
 {
   if (!balanced_ || !balanced_->appliesTo(solver)) {
     solver.solve(rhs, x);
@@ -950,8 +962,7 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     }
     return s;
   };
-  if (holdsBody_)
-    startNearestPointsInContact();
+  if (holdsBody_) startNearestPointsInContact();
   history.push_back(signature());
   // A direct solver is done with the previous step's matrix once it has factorised it: its
   // values are overwritten in the next step. A Krylov solver's preconditioner may keep it.
@@ -971,8 +982,7 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
   }
   for (int it = 1; it <= settings_.newton.maxIterations; ++it) {
     const auto stepStart = std::chrono::steady_clock::now();
-    if (holdsBody_)
-      checkSomePointInContact(it - 1);
+    if (holdsBody_) checkSomePointInContact(it - 1);
     int linearIterations = 0;
     if (eliminate) {
       const bool symmetric = eliminatedMatrix(elimination, A, rhs);
@@ -989,15 +999,15 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
       solver.setOperator(A, false);
       linearIterations = linearSolve(solver, rhs, x, K);
     }
-    if (solver.isIterative())
-      stats_.linearIterationsPerStep.push_back(linearIterations);
+    if (solver.isIterative()) stats_.linearIterationsPerStep.push_back(linearIterations);
     stats_.newtonIterations = it;
     evaluate(K, b, x);
     const int changes = updateState(false);
     stats_.changesPerIteration.push_back(changes);
     if (stepCallback_)
-      stepCallback_(it, changes,
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count());
+      stepCallback_(
+          it, changes,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count());
     if (changes == 0) {
       stats_.converged = true;
       return;
@@ -1011,15 +1021,16 @@ void ActiveSetSolver::solveActiveSet(const CrsMatrix& K, const MultiVector& b,
     history.push_back(sig);
     if (seenAll) {
       SC_THROW_IF(stats_.remedies >= settings_.newton.maxRemedies, core::ConvergenceError,
-                  "the contact active set cycles (a state repeated after " << it
-                      << " Newton steps) and " << stats_.remedies
+                  "the contact active set cycles (a state repeated after "
+                      << it << " Newton steps) and " << stats_.remedies
                       << " remedies did not help; try a smaller 'Contact/Newton/Penalty factor'.");
       ++stats_.remedies;
       updateState(true);  // points whose slip direction flipped go to the stick set
     }
   }
   SC_THROW_IF(true, core::ConvergenceError,
-              "the contact active set did not settle in " << settings_.newton.maxIterations
+              "the contact active set did not settle in "
+                  << settings_.newton.maxIterations
                   << " Newton steps ('Contact/Newton/Maximum iterations'); the last step changed "
                   << stats_.changesPerIteration.back() << " points.");
 }

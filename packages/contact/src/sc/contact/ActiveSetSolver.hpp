@@ -180,7 +180,8 @@ private:
     Teuchos::RCP<CrsMatrix> Q, T, G;  ///< x = Q y, y = T x, G = Qᵀ K Q
     Teuchos::RCP<MultiVector> Qb;     ///< Qᵀ b
   };
-  /// Q, T = Q⁻¹, Qᵀ K Q and Qᵀ b for this K and b (once per solve: they do not depend on the state).
+  /// Q, T = Q⁻¹, Qᵀ K Q and Qᵀ b for this K and b (once per solve: they do not depend on the
+  /// state).
   Elimination eliminationBasis(const CrsMatrix& K, const MultiVector& b) const;
   /// The system of the current state in frame coordinates y (x = Q y): traction rows that fix
   /// one coordinate are eliminated with their column, dual rows are Galerkin rows of Qᵀ K Q.

@@ -31,8 +31,7 @@ double BalancedStopping::stressEnergyNorm(const Tpetra::CrsMatrix<>& energy,
   const auto& map = *vs.getMap();
   auto data = vs.getDataNonConst(0);
   for (std::size_t i = 0; i < map.getNodeNumElements(); ++i)
-    if (map.getGlobalElement(static_cast<int>(i)) >= stressDofs)
-      data[i] = 0.0;
+    if (map.getGlobalElement(static_cast<int>(i)) >= stressDofs) data[i] = 0.0;
   energy.apply(vs, Av);
   Teuchos::Array<double> dot(1);
   vs.dot(Av, dot());
@@ -42,7 +41,8 @@ double BalancedStopping::stressEnergyNorm(const Tpetra::CrsMatrix<>& energy,
 BalancedStopping::Result BalancedStopping::solve(solvers::LinearSolver& solver,
                                                  const Tpetra::MultiVector<>& rhs,
                                                  Tpetra::MultiVector<>& x,
-                                                 const Tpetra::CrsMatrix<>& energy, long long stressDofs)
+                                                 const Tpetra::CrsMatrix<>& energy,
+                                                 long long stressDofs)
 {
   const double fixedTolerance = solver.relativeTolerance();
   const double limit = solver.maximumRelativeResidual();
@@ -60,7 +60,8 @@ BalancedStopping::Result BalancedStopping::solve(solvers::LinearSolver& solver,
   const double bound = fraction_ * eta_;
   // The tolerance expected to give half the bound: from the error per unit of relative residual
   // of the last solve, or (first balanced solve) the relative bound γ η/‖A^{1/2}σ_h‖.
-  double tolerance = errorPerResidual_ > 0.0 ? 0.5 * bound / errorPerResidual_ : fraction_ * relativeEta_;
+  double tolerance =
+      errorPerResidual_ > 0.0 ? 0.5 * bound / errorPerResidual_ : fraction_ * relativeEta_;
   tolerance = std::clamp(tolerance, fixedTolerance, kLoosestTolerance);
   Result r;
   Tpetra::MultiVector<> error(x.getMap(), 1);
@@ -68,23 +69,21 @@ BalancedStopping::Result BalancedStopping::solve(solvers::LinearSolver& solver,
     solver.setRelativeTolerance(tolerance);
     // The Krylov solver checks its own tolerance; the residual limit (a guard against singular
     // systems) must not reject a solve that meets a looser one.
-    if (limit > 0.0)
-      solver.setMaximumRelativeResidual(std::max(limit, tolerance));
+    if (limit > 0.0) solver.setMaximumRelativeResidual(std::max(limit, tolerance));
     solver.solve(rhs, x);  // from the current x: a tighter repeat continues where it stopped
     r.iterations += solver.lastSolveStats().iterations;
     r.tolerance = tolerance;
     ++r.stages;
     SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
                 "Contact/Newton/Stopping = Balanced: the solver " << solver.name()
-                                                                 << " gives no error estimate");
+                                                                  << " gives no error estimate");
     r.algebraicError = stressEnergyNorm(energy, error, stressDofs);
     const double residual = solver.lastSolveStats().relativeResidual;
-    if (residual > 0.0)
-      errorPerResidual_ = r.algebraicError / residual;
-    if (r.algebraicError <= bound || tolerance <= fixedTolerance)
-      break;
+    if (residual > 0.0) errorPerResidual_ = r.algebraicError / residual;
+    if (r.algebraicError <= bound || tolerance <= fixedTolerance) break;
     // Not yet balanced: the tolerance for half the bound, at least 10× tighter than this one.
-    tolerance = std::max(fixedTolerance, std::min(0.1 * tolerance, 0.5 * bound / errorPerResidual_));
+    tolerance =
+        std::max(fixedTolerance, std::min(0.1 * tolerance, 0.5 * bound / errorPerResidual_));
   }
   return r;
 }

@@ -51,11 +51,11 @@ public:
   };
 
   /// Solve with the solver's current operator by the balanced rule (see the file comment); x:
-  /// initial guess in, solution out. `energy`: a matrix whose block of the first `stressDofs` global ids is the
-  /// compliance (A σ, τ) in the operator's unknowns. Restores the solver's tolerance and residual
-  /// limit. Collective.
-  Result solve(solvers::LinearSolver& solver, const Tpetra::MultiVector<>& rhs, Tpetra::MultiVector<>& x,
-               const Tpetra::CrsMatrix<>& energy, long long stressDofs);
+  /// initial guess in, solution out. `energy`: a matrix whose block of the first `stressDofs`
+  /// global ids is the compliance (A σ, τ) in the operator's unknowns. Restores the solver's
+  /// tolerance and residual limit. Collective.
+  Result solve(solvers::LinearSolver& solver, const Tpetra::MultiVector<>& rhs,
+               Tpetra::MultiVector<>& x, const Tpetra::CrsMatrix<>& energy, long long stressDofs);
 
   /// ‖A^{1/2} v_σ‖: the energy norm of the stress part (global ids < stressDofs) of v.
   static double stressEnergyNorm(const Tpetra::CrsMatrix<>& energy, const Tpetra::MultiVector<>& v,

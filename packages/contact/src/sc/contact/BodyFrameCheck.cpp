@@ -14,8 +14,7 @@ namespace sc::contact {
 void checkBodyFrameFaces(const mesh::SimplexMesh& m, const ContactSettings& settings,
                          const std::vector<std::string>& contactBoundaries)
 {
-  if (settings.frame != ContactFrame::BodyNormal)
-    return;
+  if (settings.frame != ContactFrame::BodyNormal) return;
   const int d = m.dim();
   const auto obstacle = createObstacle(settings, d);
   const double tolerance = 1e-9 * missCap(m) / 10.0;  // of the bounding-box diagonal
@@ -32,8 +31,7 @@ void checkBodyFrameFaces(const mesh::SimplexMesh& m, const ContactSettings& sett
   };
   std::map<int, Touch> touched;
   for (int f : m.boundaryFaces()) {
-    if (std::find(ids.begin(), ids.end(), m.faceBoundaryId(f)) == ids.end())
-      continue;
+    if (std::find(ids.begin(), ids.end(), m.faceBoundaryId(f)) == ids.end()) continue;
     const int* fv = m.faceVertices(f);
     double centroid[3] = {0, 0, 0};
     for (int i = 0; i < d; ++i)
@@ -46,20 +44,16 @@ void checkBodyFrameFaces(const mesh::SimplexMesh& m, const ContactSettings& sett
       cosine += nF[c] * into[c];
     const bool perpendicular = cosine < cosLimit;
     for (int i = 0; i < d; ++i) {
-      if (obstacle->height(m.vertex(fv[i])) > tolerance)
-        continue;
+      if (obstacle->height(m.vertex(fv[i])) > tolerance) continue;
       Touch& t = touched[fv[i]];
       t.held = t.held || !perpendicular;
-      if (perpendicular && t.face < 0)
-        t.face = f, t.cosine = cosine;
+      if (perpendicular && t.face < 0) t.face = f, t.cosine = cosine;
     }
   }
   int count = 0, vertex = -1;
   for (const auto& [v, t] : touched)
-    if (!t.held && count++ == 0)
-      vertex = v;
-  if (count == 0)
-    return;
+    if (!t.held && count++ == 0) vertex = v;
+  if (count == 0) return;
   const Touch& t = touched.at(vertex);
   auto point = [&](const double* x) {
     std::ostringstream os;
@@ -75,20 +69,21 @@ void checkBodyFrameFaces(const mesh::SimplexMesh& m, const ContactSettings& sett
   const double* x = m.vertex(vertex);
   const double h = obstacle->height(x);
   const double angle = std::acos(std::clamp(t.cosine, -1.0, 1.0)) * 180.0 / M_PI;
-  SC_THROW_IF(true, core::InputError,
-              "'Contact/Frame' = 'Body normal' cannot hold the contact part '"
-                  << m.boundaryName(m.faceBoundaryId(t.face)) << "' where it meets the obstacle: "
-                  << "its face through " << face.str() << " has its outward normal at "
-                  << std::round(angle * 10.0) / 10.0 << " degrees to the direction into the "
-                  << "obstacle (more than " << kBodyFramePerpendicularDegrees << "), and its "
-                  << "vertex " << point(x) << (h < -tolerance ? " lies behind" : " lies on")
-                  << " the obstacle's surface (height " << h << "), on no contact face that "
-                  << "faces the obstacle (" << count << (count == 1 ? " such vertex" : " such vertices")
-                  << "). Along the face's normal the ray " << (t.cosine <= 1e-12 ? "never meets" : "meets")
-                  << " the obstacle" << (t.cosine <= 1e-12 ? "" : " only far away") << ", so its "
-                  << "points stay free and the body would go through the obstacle there without "
-                  << "a force. Use 'Contact/Frame' = 'Obstacle normal' (the default), or add the "
-                  << "faces that meet the obstacle to a Contact part.");
+  SC_THROW_IF(
+      true, core::InputError,
+      "'Contact/Frame' = 'Body normal' cannot hold the contact part '"
+          << m.boundaryName(m.faceBoundaryId(t.face)) << "' where it meets the obstacle: "
+          << "its face through " << face.str() << " has its outward normal at "
+          << std::round(angle * 10.0) / 10.0 << " degrees to the direction into the "
+          << "obstacle (more than " << kBodyFramePerpendicularDegrees << "), and its "
+          << "vertex " << point(x) << (h < -tolerance ? " lies behind" : " lies on")
+          << " the obstacle's surface (height " << h << "), on no contact face that "
+          << "faces the obstacle (" << count << (count == 1 ? " such vertex" : " such vertices")
+          << "). Along the face's normal the ray " << (t.cosine <= 1e-12 ? "never meets" : "meets")
+          << " the obstacle" << (t.cosine <= 1e-12 ? "" : " only far away") << ", so its "
+          << "points stay free and the body would go through the obstacle there without "
+          << "a force. Use 'Contact/Frame' = 'Obstacle normal' (the default), or add the "
+          << "faces that meet the obstacle to a Contact part.");
 }
 
 }  // namespace sc::contact

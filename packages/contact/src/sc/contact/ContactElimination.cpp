@@ -4,10 +4,11 @@
 // eliminated symmetrically.
 //
 // On a contact face with DOF points q (scales s_q) and constraint coefficients p (V: points ×
-// coefficients), the coordinates y_{p,r} = frame_r · τ_p, τ_{p,i} = Σ_q V⁻¹(p,q) s_q x_{q,i}, replace
-// the face's DOFs x_{q,i} (in the slot of DOF (p, r), as the replaced rows of modifiedMatrix):
-// x = Q y with Q_{(q,i),(p,r)} = V(q,p)/s_q frame_r[i], T = Q⁻¹, the identity off the contact faces.
-// Then the dual quantities are rows of Qᵀ(K x − b) (ρ_p = Vᵀ S⁻¹ (K x − b)), so that
+// coefficients), the coordinates y_{p,r} = frame_r · τ_p, τ_{p,i} = Σ_q V⁻¹(p,q) s_q x_{q,i},
+// replace the face's DOFs x_{q,i} (in the slot of DOF (p, r), as the replaced rows of
+// modifiedMatrix): x = Q y with Q_{(q,i),(p,r)} = V(q,p)/s_q frame_r[i], T = Q⁻¹, the identity off
+// the contact faces. Then the dual quantities are rows of Qᵀ(K x − b) (ρ_p = Vᵀ S⁻¹ (K x − b)), so
+// that
 //   - a dual row α·ρ_p = γ with α = frame_r is the Galerkin row (p, r) of G = Qᵀ K Q with
 //     right-hand side (Qᵀ b)_{(p,r)} + γ;
 //   - a traction row β·τ_p = γ with β = c frame_r fixes y_{(p,r)} = γ/c: eliminated with its
@@ -146,8 +147,7 @@ bool ActiveSetSolver::eliminatedMatrix(const Elimination& e, Teuchos::RCP<CrsMat
       const LO slot = rowMap.getLocalElement(cf.gids[p.index][r]);
       auto only = [&](const std::array<double, 3>& c) {
         for (int s = 0; s < d; ++s)
-          if (s != r && std::abs(c[s]) > 1e-12 * std::abs(c[r]))
-            return false;
+          if (s != r && std::abs(c[s]) > 1e-12 * std::abs(c[r])) return false;
         return c[r] != 0.0;
       };
       const bool noA = ca[0] == 0.0 && ca[1] == 0.0 && ca[2] == 0.0;
@@ -181,8 +181,7 @@ bool ActiveSetSolver::eliminatedMatrix(const Elimination& e, Teuchos::RCP<CrsMat
               add(inds(k), ca[s] * v(k));
             rhsValue += ca[s] * qb[other];
           }
-          if (cb[s] != 0.0)
-            add(colMap.getLocalElement(cf.gids[p.index][s]), cb[s]);
+          if (cb[s] != 0.0) add(colMap.getLocalElement(cf.gids[p.index][s]), cb[s]);
         }
         A->replaceLocalValues(slot, Teuchos::ArrayView<const LO>(pattern.data(), pattern.extent(0)),
                               Teuchos::ArrayView<const double>(vals));

@@ -38,11 +38,9 @@ void commitLoadStep(std::vector<ContactPoint>& points)
 std::vector<std::string> csvColumns(int dim)
 {
   std::vector<std::string> columns = {"x", "y"};
-  if (dim == 3)
-    columns.push_back("z");
+  if (dim == 3) columns.push_back("z");
   columns.insert(columns.end(), {"sigma_n", "sigma_t"});
-  if (dim == 3)
-    columns.push_back("sigma_t2");
+  if (dim == 3) columns.push_back("sigma_t2");
   columns.insert(columns.end(), {"weighted_gap", "weighted_slip", "status"});
   return columns;
 }
@@ -66,11 +64,11 @@ std::vector<PointValues> pointValues(const std::vector<ContactPoint>& points, in
   for (std::size_t i = 0; i < points.size(); ++i) {
     auto& f = faces[points[i].block];
     const auto index = static_cast<std::size_t>(points[i].index);
-    if (f.size() <= index)
-      f.resize(index + 1, points.size());
+    if (f.size() <= index) f.resize(index + 1, points.size());
     f[index] = i;
   }
-  const auto alphas = bernsteinCoefficients ? bernsteinIndices(degree, dim) : std::vector<std::array<int, 3>>();
+  const auto alphas =
+      bernsteinCoefficients ? bernsteinIndices(degree, dim) : std::vector<std::array<int, 3>>();
   for (const auto& [block, members] : faces) {
     SC_THROW_IF(bernsteinCoefficients && members.size() != alphas.size(), core::InternalError,
                 "contact::pointValues: face block " << block << " has " << members.size()
@@ -78,7 +76,8 @@ std::vector<PointValues> pointValues(const std::vector<ContactPoint>& points, in
                                                     << alphas.size());
     for (std::size_t p = 0; p < members.size(); ++p) {
       SC_THROW_IF(members[p] == points.size(), core::InternalError,
-                  "contact::pointValues: point " << p << " of face block " << block << " is missing");
+                  "contact::pointValues: point " << p << " of face block " << block
+                                                 << " is missing");
       const ContactPoint& cp = points[members[p]];
       PointValues& v = values[members[p]];
       if (!bernsteinCoefficients) {

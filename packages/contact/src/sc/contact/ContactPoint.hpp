@@ -20,14 +20,14 @@ std::string toString(PointStatus s);
 /// non-negative (3D, 2D k = 3), a Bernstein coefficient B_p of the face (non-negative dual weight
 /// B_p).
 struct ContactPoint {
-  int face = -1;                     ///< mesh face
-  int block = -1;                    ///< index of its face block in the solver (internal)
-  int index = -1;                    ///< index within the face block
-  std::array<double, 3> x{};         ///< the DOF point, or the Bernstein control point
+  int face = -1;              ///< mesh face
+  int block = -1;             ///< index of its face block in the solver (internal)
+  int index = -1;             ///< index within the face block
+  std::array<double, 3> x{};  ///< the DOF point, or the Bernstein control point
   std::array<double, 3> n{}, t1{}, t2{};
-  double gap = 0.0;      ///< weighted gap G_p = ∫_F g w_p ds (w_p = ℓ_p or B_p)
-  double weight = 0.0;   ///< ∫_F w_p ds (for the resultant force)
-  double c = 0.0;        ///< semismooth Newton constant 2μ/(h_F |F|)
+  double gap = 0.0;     ///< weighted gap G_p = ∫_F g w_p ds (w_p = ℓ_p or B_p)
+  double weight = 0.0;  ///< ∫_F w_p ds (for the resultant force)
+  double c = 0.0;       ///< semismooth Newton constant 2μ/(h_F |F|)
   // State and results.
   PointStatus status = PointStatus::Free;
   std::array<double, 2> direction{};  ///< slip direction ξ in (t1, t2)
@@ -63,10 +63,10 @@ std::vector<double> csvValues(const ContactPoint& p, int dim);
 /// A contact point's quantities as values at its position, for the XDMF `contact` grid
 /// (docs/output.md "Fields in a run's files").
 struct PointValues {
-  double pressure = 0.0;               ///< −σ_N at the point
-  std::array<double, 2> sigmaT{};      ///< (σ_T·t1, σ_T·t2) at the point (t2 part 0 in 2D)
-  double gap = 0.0;                    ///< (G − r_N)/W: the weighted gap left open per weight
-  std::array<double, 2> slip{};        ///< r_T/W: the weighted tangential displacement per weight
+  double pressure = 0.0;           ///< −σ_N at the point
+  std::array<double, 2> sigmaT{};  ///< (σ_T·t1, σ_T·t2) at the point (t2 part 0 in 2D)
+  double gap = 0.0;                ///< (G − r_N)/W: the weighted gap left open per weight
+  std::array<double, 2> slip{};    ///< r_T/W: the weighted tangential displacement per weight
 };
 /// The values of `points` in their order. The traction of a face is Σ_q τ_q V_q with V_q the
 /// Lagrange basis of the face's DOF points (point constraints: τ_q are already the values at

@@ -8,7 +8,7 @@ namespace sc::contact {
 ContactProblem::ContactProblem(const core::Material& material,
                                std::vector<std::string> contactBoundaries,
                                Teuchos::RCP<const Teuchos::Comm<int>> comm)
-  : material_(material), boundaries_(std::move(contactBoundaries)), comm_(std::move(comm))
+    : material_(material), boundaries_(std::move(contactBoundaries)), comm_(std::move(comm))
 {
 }
 
@@ -40,8 +40,7 @@ void ContactProblem::setUp(const disc::MixedElasticitySpace& space, const Contac
   solver_ = std::make_unique<ActiveSetSolver>(space, settings, material_, boundaries_, comm_);
   solver_->setContactHoldsBody(holdsBody_);
   solver_->setBalancedStopping(balanced_);
-  if (callback_)
-    solver_->setStepCallback(callback_);
+  if (callback_) solver_->setStepCallback(callback_);
 }
 
 void ContactProblem::transferState()

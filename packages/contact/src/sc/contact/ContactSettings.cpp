@@ -14,7 +14,8 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
   using namespace sc::core;
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Contact"));
-    declareChoice(*pl, "Obstacle", "Plane", {"Plane", "Circle", "Sphere", "Cylinder", "Height function"},
+    declareChoice(*pl, "Obstacle", "Plane",
+                  {"Plane", "Circle", "Sphere", "Cylinder", "Height function"},
                   "Shape of the rigid obstacle: a Plane (the foundation), a rigid indenter: "
                   "Circle (2D: a cylinder in plane strain/stress), Sphere (3D) or Cylinder (3D, "
                   "with Obstacle axis), given by Obstacle center and Obstacle radius, the body "
@@ -60,8 +61,8 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
                   "|σ_T| ≤ μ_F|σ_N|.");
     declareReal(*pl, "Friction coefficient", 0.0, "Coulomb friction coefficient μ_F ≥ 0.", 0.0,
                 false, kInfinity, false);
-    declareReal(*pl, "Tresca bound", 0.0, "Slip bound s ≥ 0 of the Tresca law (stress units).",
-                0.0, false, kInfinity, false);
+    declareReal(*pl, "Tresca bound", 0.0, "Slip bound s ≥ 0 of the Tresca law (stress units).", 0.0,
+                false, kInfinity, false);
     pl->set("Newton", *ActiveSetSolver::getValidParameters(),
             "Semismooth Newton / active-set solver (docs/theory.md §\"Contact and friction\").");
     return pl;
@@ -71,7 +72,9 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
 
 ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl, int dimension)
 {
-  auto toVector = [](const Teuchos::Array<double>& a) { return std::vector<double>(a.begin(), a.end()); };
+  auto toVector = [](const Teuchos::Array<double>& a) {
+    return std::vector<double>(a.begin(), a.end());
+  };
   ContactSettings c;
   c.obstacle = pl.get<std::string>("Obstacle");
   c.obstaclePoint = toVector(pl.get<Teuchos::Array<double>>("Obstacle point"));
@@ -102,48 +105,58 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
     const char* graph = dimension == 2 ? "y = h(x)" : "z = h(x, y)";
     SC_THROW_IF(height.size() != 1, core::InputError,
                 "'Contact/Obstacle' = 'Height function' needs 'Contact/Obstacle height', the "
-                "formula h of the surface " << graph << " (e.g. {0.1*x^2}).");
+                "formula h of the surface "
+                    << graph << " (e.g. {0.1*x^2}).");
     c.obstacleHeight = height[0];
     const core::Expression h(c.obstacleHeight, "'Contact/Obstacle height'");
     const char* own = dimension == 2 ? "y" : "z";
     SC_THROW_IF(h.uses(own), core::InputError,
-                "'Contact/Obstacle height' = '" << c.obstacleHeight << "' uses " << own
+                "'Contact/Obstacle height' = '"
+                    << c.obstacleHeight << "' uses " << own
                     << ", the height's own coordinate: the surface is " << graph
                     << ", a formula of " << (dimension == 2 ? "x" : "x and y") << " (and t).");
     bool alongAxis = true;
     for (int i = 0; i + 1 < dimension; ++i)
       alongAxis = alongAxis && std::abs(c.obstacleNormal[i]) <= 1e-12;
     SC_THROW_IF(!alongAxis, core::InputError,
-                "'Contact/Obstacle normal' must be " << (dimension == 2 ? "{0, 1} or {0, -1}" : "{0, 0, 1} or {0, 0, -1}")
+                "'Contact/Obstacle normal' must be "
+                    << (dimension == 2 ? "{0, 1} or {0, -1}" : "{0, 0, 1} or {0, 0, -1}")
                     << " for 'Contact/Obstacle' = 'Height function' (the body above or below the "
-                       "surface " << graph << "), but it is not along the "
-                    << own << " axis.");
+                       "surface "
+                    << graph << "), but it is not along the " << own << " axis.");
     const double side = c.obstacleNormal[dimension - 1] > 0.0 ? 1.0 : -1.0;
     c.obstacleNormal.assign(dimension, 0.0);
     c.obstacleNormal[dimension - 1] = side;
   } else if (c.obstacle != "Plane") {
     const bool needs3D = c.obstacle != "Circle";
     SC_THROW_IF(needs3D != (dimension == 3), core::InputError,
-                "'Contact/Obstacle' = '" << c.obstacle << "' is a " << (needs3D ? "3D" : "2D")
+                "'Contact/Obstacle' = '"
+                    << c.obstacle << "' is a " << (needs3D ? "3D" : "2D")
                     << " indenter, but Problem/Dimension is " << dimension << "; valid: "
-                    << (dimension == 2 ? "'Plane', 'Circle', 'Height function'" : "'Plane', 'Sphere', 'Cylinder', 'Height function'") << ".");
+                    << (dimension == 2 ? "'Plane', 'Circle', 'Height function'"
+                                       : "'Plane', 'Sphere', 'Cylinder', 'Height function'")
+                    << ".");
     SC_THROW_IF(static_cast<int>(c.obstacleCenter.size()) != dimension, core::InputError,
                 "'Contact/Obstacle' = '" << c.obstacle << "' needs 'Contact/Obstacle center' with "
-                    << dimension << " components (got " << c.obstacleCenter.size() << ").");
+                                         << dimension << " components (got "
+                                         << c.obstacleCenter.size() << ").");
     if (c.obstacle == "Cylinder") {
       double a = 0.0;
-      for (double x : c.obstacleAxis) a += x * x;
+      for (double x : c.obstacleAxis)
+        a += x * x;
       a = std::sqrt(a);
       SC_THROW_IF(c.obstacleAxis.size() != 3 || !(a > 0.0), core::InputError,
                   "'Contact/Obstacle' = 'Cylinder' needs 'Contact/Obstacle axis', a non-zero "
-                  "vector of 3 components (got " << c.obstacleAxis.size() << " components).");
-      for (double& x : c.obstacleAxis) x /= a;
+                  "vector of 3 components (got "
+                      << c.obstacleAxis.size() << " components).");
+      for (double& x : c.obstacleAxis)
+        x /= a;
     }
   }
   c.frame = pl.get<std::string>("Frame") == "Body normal" ? ContactFrame::BodyNormal
                                                           : ContactFrame::ObstacleNormal;
   const std::string law = pl.get<std::string>("Friction law");
-  c.frictionLaw = law == "Coulomb" ? FrictionLaw::Coulomb
+  c.frictionLaw = law == "Coulomb"  ? FrictionLaw::Coulomb
                   : law == "Tresca" ? FrictionLaw::Tresca
                                     : FrictionLaw::None;
   c.frictionCoefficient = pl.get<double>("Friction coefficient");
@@ -158,7 +171,8 @@ NewtonSettings NewtonSettings::fromParameters(const Teuchos::ParameterList& nl)
   s.maxIterations = nl.get<int>("Maximum iterations");
   s.penaltyFactor = nl.get<double>("Penalty factor");
   s.maxRemedies = nl.get<int>("Maximum remedies");
-  s.hueberStadlerWohlmuth = nl.get<std::string>("3D slip linearisation") == "Hueber-Stadler-Wohlmuth";
+  s.hueberStadlerWohlmuth =
+      nl.get<std::string>("3D slip linearisation") == "Hueber-Stadler-Wohlmuth";
   s.coulombMethod = nl.get<std::string>("Coulomb method");
   s.maxFixedPointIterations = nl.get<int>("Maximum fixed-point iterations");
   s.fixedPointTolerance = nl.get<double>("Fixed-point tolerance");

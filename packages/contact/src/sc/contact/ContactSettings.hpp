@@ -38,14 +38,15 @@ struct NewtonSettings {
 
 /// "Contact": the rigid obstacle and the friction law (docs/theory.md §"Contact and friction").
 struct ContactSettings {
-  std::string obstacle;                ///< Plane, Circle (2D), Sphere (3D), Cylinder (3D), Height function
-  std::vector<double> obstaclePoint;   ///< a point of the plane
+  std::string obstacle;  ///< Plane, Circle (2D), Sphere (3D), Cylinder (3D), Height function
+  std::vector<double> obstaclePoint;  ///< a point of the plane
   /// Plane: its unit normal, pointing into the body. Indenters: the unit direction in which the
   /// indenter presses into the body (the contact summary's load axis).
   std::vector<double> obstacleNormal;
-  std::vector<double> obstacleCenter;  ///< indenters: centre of the circle/sphere, a point of the axis
-  double obstacleRadius{};             ///< indenters: radius
-  std::vector<double> obstacleAxis;    ///< Cylinder: unit axis direction
+  std::vector<double>
+      obstacleCenter;       ///< indenters: centre of the circle/sphere, a point of the axis
+  double obstacleRadius{};  ///< indenters: radius
+  std::vector<double> obstacleAxis;  ///< Cylinder: unit axis direction
   /// Height function: the formula h of the surface x_d = h(x_1, ..., x_{d-1}) (y = h(x) in 2D,
   /// z = h(x, y) in 3D; the key 'Contact/Obstacle height'); obstacleNormal is ±e_d.
   std::string obstacleHeight;

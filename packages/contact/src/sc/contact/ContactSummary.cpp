@@ -22,27 +22,21 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
       maxIn = std::max(maxIn, s[i]);
       minIn = std::min(minIn, s[i]);
     }
-  if (!any)
-    return 0.0;
+  if (!any) return 0.0;
   double nextOut = 1e300, prevOut = -1e300;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (!in[i]) {
-      if (s[i] > maxIn)
-        nextOut = std::min(nextOut, s[i]);
-      if (s[i] < minIn)
-        prevOut = std::max(prevOut, s[i]);
+      if (s[i] > maxIn) nextOut = std::min(nextOut, s[i]);
+      if (s[i] < minIn) prevOut = std::max(prevOut, s[i]);
     }
   const double right = nextOut < 1e299 ? 0.5 * (maxIn + nextOut) : maxIn;
-  if (!signedCoordinate)
-    return right;
+  if (!signedCoordinate) return right;
   const double left = prevOut > -1e299 ? 0.5 * (minIn + prevOut) : minIn;
-  if (ends)
-    *ends = {left, right};
+  if (ends) *ends = {left, right};
   return 0.5 * (right - left);
 }
 
 }  // namespace
-
 
 ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
                                 const std::vector<double>& obstacleNormal,
@@ -52,7 +46,8 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
   // A point carrying no more pressure than the floor counts as free here (a zero load must not
   // report a contact zone of round-off pressures).
   auto status = [pressureFloor](const ContactPoint& p) {
-    return p.status != PointStatus::Free && -p.sigmaN <= pressureFloor ? PointStatus::Free : p.status;
+    return p.status != PointStatus::Free && -p.sigmaN <= pressureFloor ? PointStatus::Free
+                                                                       : p.status;
   };
   // Local contributions: force, pressure, counts, centroid of active points, zone areas.
   double local[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // force(3), active count, centroid(3), areas(2)
@@ -77,8 +72,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
         cosine += p.n[i] * obstacleNormal[i];
       const double share = std::abs(p.weight * cosine);
       local[7] += share;
-      if (status(p) == PointStatus::Stick)
-        local[8] += share;
+      if (status(p) == PointStatus::Stick) local[8] += share;
     }
   }
   double global[9];

@@ -19,8 +19,8 @@ namespace sc::contact {
 struct ContactSummary {
   std::array<double, 3> force{};  ///< ∫_ΓC σn ds (vector resultant)
   double maxPressure = 0.0;       ///< max over the face DOF points of −σ_N (≥ 0)
-  double zoneSize = 0.0;          ///< half-width (2D) or radius (3D) of the contact zone (outermost)
-  double stickZoneSize = 0.0;     ///< the same for the stick zone (0 without friction)
+  double zoneSize = 0.0;       ///< half-width (2D) or radius (3D) of the contact zone (outermost)
+  double stickZoneSize = 0.0;  ///< the same for the stick zone (0 without friction)
   /// 2D: the stick zone's ends (−c₋, c₊) along the plane's tangent (−ν_y, ν_x), from `center`
   /// (stickZoneSize = (c₊ + c₋)/2; after a tangential load step the zone is not centred).
   std::array<double, 2> stickZoneEnds{};

@@ -26,8 +26,7 @@ std::optional<HertzComparison> compareWithHertz(int dim, const ContactSummary& s
                                                 const core::Material& material, double radius)
 {
   const double load = summary.force[dim - 1];
-  if (!(load > 0.0))
-    return std::nullopt;
+  if (!(load > 0.0)) return std::nullopt;
   HertzComparison c;
   c.reference = hertzFromLoad(dim, load, material.youngModulus,
                               material.planeStress ? 0.0 : material.poissonRatio, radius);

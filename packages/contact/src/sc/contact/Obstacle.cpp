@@ -12,7 +12,7 @@ namespace sc::contact {
 
 PlaneObstacle::PlaneObstacle(int dim, const std::vector<double>& point,
                              const std::vector<double>& normal)
-  : dim_(dim)
+    : dim_(dim)
 {
   for (int i = 0; i < dim; ++i) {
     point_[i] = point.at(i);
@@ -50,15 +50,14 @@ std::array<double, 3> PlaneObstacle::contactNormal(const double* /*x*/) const
 IndenterObstacle::IndenterObstacle(int dim, const std::vector<double>& center, double radius,
                                    const std::vector<double>& axis,
                                    const std::vector<double>& loadDirection)
-  : dim_(dim), radius_(radius), cylinder_(!axis.empty())
+    : dim_(dim), radius_(radius), cylinder_(!axis.empty())
 {
   SC_THROW_IF(!(radius > 0.0) || !std::isfinite(radius), core::InputError,
               "'Contact/Obstacle radius' = " << radius << " must be a positive number.");
   for (int i = 0; i < dim; ++i) {
     center_[i] = center.at(i);
     load_[i] = loadDirection.at(i);
-    if (cylinder_)
-      axis_[i] = axis.at(i);
+    if (cylinder_) axis_[i] = axis.at(i);
   }
 }
 
@@ -142,7 +141,7 @@ std::string pointText(const double* x, int n)
 HeightFunctionObstacle::HeightFunctionObstacle(int dim, const std::string& formula, double side,
                                                const std::vector<double>& offset,
                                                double lengthScale)
-  : dim_(dim), h_(formula, "'Contact/Obstacle height'"), side_(side > 0.0 ? 1.0 : -1.0)
+    : dim_(dim), h_(formula, "'Contact/Obstacle height'"), side_(side > 0.0 ? 1.0 : -1.0)
 {
   for (int i = 0; i < dim && i < static_cast<int>(offset.size()); ++i)
     offset_[i] = offset[i];
@@ -174,8 +173,7 @@ bool HeightFunctionObstacle::slope(const double* xi, double* g) const
     const double p1 = at(1), m1 = at(-1), p2 = at(2), m2 = at(-2);
     // Differences first: exactly 0 for a constant h (the Plane's numbers to rounding).
     g[i] = (8.0 * (p1 - m1) - (p2 - m2)) / (12.0 * firstStep_);
-    if (!std::isfinite(g[i]))
-      return false;
+    if (!std::isfinite(g[i])) return false;
   }
   return true;
 }
@@ -195,8 +193,7 @@ bool HeightFunctionObstacle::hessian(const double* xi, double* H) const
     H[1] = H[2] = ((at(1, 1) - at(1, -1)) - (at(-1, 1) - at(-1, -1))) / (4.0 * d * d);
   }
   for (int i = 0; i < m * m; ++i)
-    if (!std::isfinite(H[i]))
-      return false;
+    if (!std::isfinite(H[i])) return false;
   return true;
 }
 
@@ -207,9 +204,10 @@ std::array<double, 2> HeightFunctionObstacle::closestPoint(const double* x) cons
   std::array<double, 2> xi{x[0], m > 1 ? x[1] : 0.0};
   auto notFinite = [&](const double* where, const char* what) {
     SC_THROW_IF(true, core::InputError,
-                "'Contact/Obstacle height' = '" << h_.formula() << "' gives a " << what
-                    << " that is not finite at " << pointText(where, m) << " (t = "
-                    << core::Expression::loadTime() << "), where the obstacle's surface next to "
+                "'Contact/Obstacle height' = '"
+                    << h_.formula() << "' gives a " << what << " that is not finite at "
+                    << pointText(where, m) << " (t = " << core::Expression::loadTime()
+                    << "), where the obstacle's surface next to "
                     << "the body point " << pointText(x, dim_) << " is needed: the height "
                     << "function must be finite, with its slope, over the body's span.");
   };
@@ -220,19 +218,16 @@ std::array<double, 2> HeightFunctionObstacle::closestPoint(const double* x) cons
     return 0.5 * D;
   };
   double D = objective(xi.data());
-  if (!std::isfinite(D))
-    notFinite(xi.data(), "height");
+  if (!std::isfinite(D)) notFinite(xi.data(), "height");
   const double tolerance = 1e-13 * length_;
   for (int iteration = 0; iteration < 100; ++iteration) {
     double g[2] = {0.0, 0.0}, Hs[4] = {0.0, 0.0, 0.0, 0.0};
-    if (!slope(xi.data(), g))
-      notFinite(xi.data(), "slope");
+    if (!slope(xi.data(), g)) notFinite(xi.data(), "slope");
     const double r = surface(xi.data()) - target;
     double grad[2] = {0.0, 0.0};
     for (int i = 0; i < m; ++i)
       grad[i] = (xi[i] - x[i]) + r * g[i];
-    if ((m == 1 ? std::abs(grad[0]) : std::hypot(grad[0], grad[1])) == 0.0)
-      break;
+    if ((m == 1 ? std::abs(grad[0]) : std::hypot(grad[0], grad[1])) == 0.0) break;
     // Newton's matrix I + ∇H∇Hᵀ + (H − x_d)∇²H where it is positive definite, else the
     // Gauss–Newton matrix I + ∇H∇Hᵀ (always positive definite): a descent direction either way.
     double J[4];
@@ -247,8 +242,7 @@ std::array<double, 2> HeightFunctionObstacle::closestPoint(const double* x) cons
       for (int k = 0; k < m * m; ++k)
         N[k] = J[k] + r * Hs[k];
       const bool definite = m == 1 ? N[0] > 0.0 : (N[0] > 0.0 && N[0] * N[3] - N[1] * N[2] > 0.0);
-      if (definite)
-        std::copy(N, N + m * m, J);
+      if (definite) std::copy(N, N + m * m, J);
     }
     double step[2];
     if (m == 1) {
@@ -268,8 +262,7 @@ std::array<double, 2> HeightFunctionObstacle::closestPoint(const double* x) cons
     const double residual = m == 1 ? std::abs(grad[0]) : std::hypot(grad[0], grad[1]);
     auto residualAt = [&](const double* z) {
       double gz[2] = {0.0, 0.0};
-      if (!slope(z, gz))
-        return std::nan("");
+      if (!slope(z, gz)) return std::nan("");
       const double rz = surface(z) - target;
       double q = 0.0;
       for (int i = 0; i < m; ++i)
@@ -286,15 +279,13 @@ std::array<double, 2> HeightFunctionObstacle::closestPoint(const double* x) cons
       accepted = std::isfinite(trialD) && (trialD <= D + 1e-4 * alpha * slopeAlong ||
                                            residualAt(trial.data()) <= 0.5 * residual);
     }
-    if (!accepted)
-      break;
+    if (!accepted) break;
     double moved = 0.0;
     for (int i = 0; i < m; ++i)
       moved = std::max(moved, std::abs(trial[i] - xi[i]));
     xi = trial;
     D = trialD;
-    if (moved <= tolerance)
-      break;
+    if (moved <= tolerance) break;
   }
   return xi;
 }
@@ -304,10 +295,12 @@ std::array<double, 3> HeightFunctionObstacle::bodyNormal(const double* xi) const
   const int m = dim_ - 1;
   double g[2] = {0.0, 0.0};
   if (!slope(xi, g))
-    SC_THROW_IF(true, core::InputError,
-                "'Contact/Obstacle height' = '" << h_.formula() << "' has a slope that is not "
-                    << "finite at " << pointText(xi, m) << " (t = " << core::Expression::loadTime()
-                    << "): the height function must be finite, with its slope, over the body's span.");
+    SC_THROW_IF(
+        true, core::InputError,
+        "'Contact/Obstacle height' = '"
+            << h_.formula() << "' has a slope that is not "
+            << "finite at " << pointText(xi, m) << " (t = " << core::Expression::loadTime()
+            << "): the height function must be finite, with its slope, over the body's span.");
   double norm = 1.0;
   for (int i = 0; i < m; ++i)
     norm += g[i] * g[i];
@@ -354,8 +347,7 @@ double HeightFunctionObstacle::gap(const double* x, const double* n, double cap)
   auto dphi = [&](double s, double* value) {
     double z[2] = {0.0, 0.0}, g[2] = {0.0, 0.0};
     base(s, z);
-    if (!slope(z, g))
-      return false;
+    if (!slope(z, g)) return false;
     double along = n[m];
     for (int i = 0; i < m; ++i)
       along -= g[i] * n[i];
@@ -365,20 +357,20 @@ double HeightFunctionObstacle::gap(const double* x, const double* n, double cap)
   auto notFinite = [&](double s) {
     double z[2] = {0.0, 0.0};
     base(s, z);
-    SC_THROW_IF(true, core::InputError,
-                "'Contact/Obstacle height' = '" << h_.formula() << "' is not finite, with its "
-                    << "slope, at " << pointText(z, m) << " (t = " << core::Expression::loadTime()
-                    << "), on the ray from the body point " << pointText(x, dim_)
-                    << " to the obstacle: the height function must be finite over the body's span.");
+    SC_THROW_IF(
+        true, core::InputError,
+        "'Contact/Obstacle height' = '"
+            << h_.formula() << "' is not finite, with its "
+            << "slope, at " << pointText(z, m) << " (t = " << core::Expression::loadTime()
+            << "), on the ray from the body point " << pointText(x, dim_)
+            << " to the obstacle: the height function must be finite over the body's span.");
   };
   const double f0 = phi(0.0);
   double g0 = 0.0;
-  if (!std::isfinite(f0) || !dphi(0.0, &g0))
-    notFinite(0.0);
+  if (!std::isfinite(f0) || !dphi(0.0, &g0)) notFinite(0.0);
   if (!(g0 < -1e-12))  // parallel to the surface or leaving it (as for the plane)
     return cap;
-  if (f0 == 0.0)
-    return 0.0;
+  if (f0 == 0.0) return 0.0;
   const double dir = f0 > 0.0 ? 1.0 : -1.0;  // the root lies ahead (outside) or behind (inside)
   const double stepMax = 0.1 * cap, tolerance = 1e-13 * length_;
   auto same = [&](double f) { return (f > 0.0) == (f0 > 0.0); };
@@ -388,47 +380,37 @@ double HeightFunctionObstacle::gap(const double* x, const double* n, double cap)
   for (int iteration = 0; iteration < 100 && !bracketed; ++iteration) {
     double g = 0.0;
     double step = dphi(s, &g) && g < 0.0 ? -f / g : dir * stepMax;
-    if (std::abs(step) > stepMax)
-      step = dir * stepMax;
+    if (std::abs(step) > stepMax) step = dir * stepMax;
     double sNew = s + step, fNew = phi(sNew);
     for (int k = 0; k < 50 && !std::isfinite(fNew); ++k) {
       step *= 0.5;
       sNew = s + step;
       fNew = phi(sNew);
     }
-    if (!std::isfinite(fNew))
-      notFinite(sNew);
-    if (std::abs(sNew) > cap)
-      return cap;
-    if (fNew == 0.0)
-      return sNew;
+    if (!std::isfinite(fNew)) notFinite(sNew);
+    if (std::abs(sNew) > cap) return cap;
+    if (fNew == 0.0) return sNew;
     if (!same(fNew)) {
       lo = s, hi = sNew, bracketed = true;
       s = sNew, f = fNew;
       break;
     }
-    if (std::abs(sNew - s) <= tolerance)
-      return sNew;
+    if (std::abs(sNew - s) <= tolerance) return sNew;
     s = sNew, f = fNew;
   }
-  if (!bracketed)
-    return std::min(s, cap);
+  if (!bracketed) return std::min(s, cap);
   // Safeguarded Newton in the bracket [lo, hi] (φ(lo) on f0's side, φ(hi) across).
   for (int iteration = 0; iteration < 200 && std::abs(hi - lo) > tolerance; ++iteration) {
     double g = 0.0;
     double sNew = dphi(s, &g) && g != 0.0 ? s - f / g : 0.5 * (lo + hi);
-    if (!(sNew > std::min(lo, hi) && sNew < std::max(lo, hi)))
-      sNew = 0.5 * (lo + hi);
+    if (!(sNew > std::min(lo, hi) && sNew < std::max(lo, hi))) sNew = 0.5 * (lo + hi);
     const double fNew = phi(sNew);
-    if (!std::isfinite(fNew))
-      notFinite(sNew);
-    if (fNew == 0.0)
-      return sNew;
+    if (!std::isfinite(fNew)) notFinite(sNew);
+    if (fNew == 0.0) return sNew;
     (same(fNew) ? lo : hi) = sNew;
     const bool converged = std::abs(sNew - s) <= tolerance;
     s = sNew, f = fNew;
-    if (converged)
-      break;
+    if (converged) break;
   }
   return std::min(s, cap);
 }
@@ -441,15 +423,17 @@ std::unique_ptr<Obstacle> createObstacle(const ContactSettings& settings, int di
     return std::make_unique<HeightFunctionObstacle>(dim, settings.obstacleHeight,
                                                     settings.obstacleNormal.at(dim - 1),
                                                     settings.obstacleOffset, settings.lengthScale);
-  SC_THROW_IF(settings.obstacle != "Circle" && settings.obstacle != "Sphere" &&
-                  settings.obstacle != "Cylinder",
-              core::InputError,
-              "'Contact/Obstacle' = '" << settings.obstacle
-                                       << "': valid obstacles: 'Plane', 'Circle', 'Sphere', 'Cylinder', 'Height function'.");
-  return std::make_unique<IndenterObstacle>(
-      dim, settings.obstacleCenter, settings.obstacleRadius,
-      settings.obstacle == "Cylinder" ? settings.obstacleAxis : std::vector<double>(),
-      settings.obstacleNormal);
+  SC_THROW_IF(
+      settings.obstacle != "Circle" && settings.obstacle != "Sphere" &&
+          settings.obstacle != "Cylinder",
+      core::InputError,
+      "'Contact/Obstacle' = '"
+          << settings.obstacle
+          << "': valid obstacles: 'Plane', 'Circle', 'Sphere', 'Cylinder', 'Height function'.");
+  return std::make_unique<IndenterObstacle>(dim, settings.obstacleCenter, settings.obstacleRadius,
+                                            settings.obstacle == "Cylinder" ? settings.obstacleAxis
+                                                                            : std::vector<double>(),
+                                            settings.obstacleNormal);
 }
 
 double missCap(const mesh::SimplexMesh& m)
@@ -497,17 +481,18 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
       const double H = surface.surface(xi);
       double g[2];
       const bool finite = std::isfinite(H);
-      if (finite && surface.slope(xi, g))
-        return;
+      if (finite && surface.slope(xi, g)) return;
       std::ostringstream span;
       for (int i = 0; i < e; ++i)
         span << (i ? " × " : "") << "[" << lo[i] << ", " << hi[i] << "]";
       SC_THROW_IF(true, core::InputError,
-                  "'Contact/Obstacle height' = '" << settings.obstacleHeight << "' is not finite"
+                  "'Contact/Obstacle height' = '"
+                      << settings.obstacleHeight << "' is not finite"
                       << (finite ? " in its slope" : "") << " at " << (e == 1 ? "x" : "(x, y)")
                       << " = " << pointText(xi, e) << " (t = " << core::Expression::loadTime()
                       << "), inside the body's span " << (e == 1 ? "x" : "(x, y)") << " ∈ "
-                      << span.str() << ": the height function must be finite, with its slope, "
+                      << span.str()
+                      << ": the height function must be finite, with its slope, "
                          "over the whole span of the body, beyond the contact zone too (continue "
                          "it there, e.g. with a conditional a ? b : c).");
     };
@@ -516,7 +501,8 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
     const int n = e == 1 ? 400 : 40;
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= (e == 1 ? 0 : n); ++j) {
-        const double xi[2] = {lo[0] + (hi[0] - lo[0]) * i / n, e == 1 ? 0.0 : lo[1] + (hi[1] - lo[1]) * j / n};
+        const double xi[2] = {lo[0] + (hi[0] - lo[0]) * i / n,
+                              e == 1 ? 0.0 : lo[1] + (hi[1] - lo[1]) * j / n};
         probe(xi);
       }
   }
@@ -533,8 +519,7 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
   for (const auto& name : contactBoundaries)
     ids.push_back(m.boundaryId(name));
   for (int f : m.boundaryFaces()) {
-    if (std::find(ids.begin(), ids.end(), m.faceBoundaryId(f)) == ids.end())
-      continue;
+    if (std::find(ids.begin(), ids.end(), m.faceBoundaryId(f)) == ids.end()) continue;
     for (int i = 0; i < d; ++i)
       contactLo = std::min(contactLo, obstacle->height(m.vertex(m.faceVertices(f)[i])));
   }
@@ -566,16 +551,17 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
     // most the fraction of the body's extent that a plane may (measured radially).
     std::ostringstream where;
     where << "the indenter ('Contact/Obstacle' = '" << settings.obstacle << "', 'Contact/Obstacle "
-          << "center' = " << vec(settings.obstacleCenter) << ", 'Contact/Obstacle radius' = "
-          << settings.obstacleRadius << ")";
+          << "center' = " << vec(settings.obstacleCenter)
+          << ", 'Contact/Obstacle radius' = " << settings.obstacleRadius << ")";
     SC_THROW_IF(mean <= 0.0, core::InputError,
                 where.str() << " holds most of the body (mean distance from its surface " << mean
                             << "): the body must lie outside the indenter, which touches its "
                                "contact boundary.");
     const double overlap = std::max(0.0, -contactLo), extent = hi - lo;
     SC_THROW_IF(overlap > kMaxInitialOverlap * extent, core::InputError,
-                "the contact boundary starts " << overlap << " deep inside " << where.str()
-                    << ", more than " << kMaxInitialOverlap << " of the body's extent " << extent
+                "the contact boundary starts "
+                    << overlap << " deep inside " << where.str() << ", more than "
+                    << kMaxInitialOverlap << " of the body's extent " << extent
                     << " measured from the indenter; the small-strain contact model does not "
                        "apply. Move the indenter out of the body (an overlap up to that fraction "
                        "is solved as a prescribed indentation).");
@@ -585,23 +571,32 @@ void checkObstacle(const mesh::SimplexMesh& m, const ContactSettings& settings,
   // plane through the body, which the opposite normal would not mend either.
   const double reach = kMaxInitialOverlap * (hi - lo);
   SC_THROW_IF(mean <= 0.0 && lo < -reach && hi > reach, core::InputError,
-              "'Contact/Obstacle point' = " << vec(settings.obstaclePoint) << " and 'Contact/Obstacle "
-                  "normal' = " << vec(settings.obstacleNormal) << " give a plane through the body: it "
-                  "extends " << -lo << " beyond the plane and " << hi << " in front of it, along the "
-                  "normal. Place the plane at the contact boundary ("
-                  << (contactBoundaries.empty() ? std::string("the Contact parts") : "'" + contactBoundaries[0] + "'")
+              "'Contact/Obstacle point' = "
+                  << vec(settings.obstaclePoint)
+                  << " and 'Contact/Obstacle "
+                     "normal' = "
+                  << vec(settings.obstacleNormal)
+                  << " give a plane through the body: it "
+                     "extends "
+                  << -lo << " beyond the plane and " << hi
+                  << " in front of it, along the "
+                     "normal. Place the plane at the contact boundary ("
+                  << (contactBoundaries.empty() ? std::string("the Contact parts")
+                                                : "'" + contactBoundaries[0] + "'")
                   << "), with the normal pointing from the obstacle towards the body.");
   SC_THROW_IF(mean <= 0.0, core::InputError,
-              "'Contact/Obstacle normal' = " << vec(settings.obstacleNormal)
+              "'Contact/Obstacle normal' = "
+                  << vec(settings.obstacleNormal)
                   << " points away from the body: the body lies on the plane's far side (mean "
                      "height "
-                  << mean << " along the normal). The normal must point from the obstacle towards "
+                  << mean
+                  << " along the normal). The normal must point from the obstacle towards "
                      "the body (here probably the opposite vector).");
   const double extent = hi - lo;
   const double overlap = std::max(0.0, -contactLo);
   SC_THROW_IF(overlap > kMaxInitialOverlap * extent, core::InputError,
-              "'Contact/Obstacle point' = " << vec(settings.obstaclePoint)
-                  << ": the contact boundary starts " << overlap
+              "'Contact/Obstacle point' = "
+                  << vec(settings.obstaclePoint) << ": the contact boundary starts " << overlap
                   << " deep inside the obstacle, more than " << kMaxInitialOverlap
                   << " of the body's extent " << extent
                   << " along the obstacle normal; the small-strain contact model does not apply. "

@@ -34,17 +34,20 @@ void ExactSolution::traction(const double* x, const double* n, double* t) const
 }
 
 // ------------------------------------------------------------------ smooth manufactured solution
-SmoothManufacturedSolution::SmoothManufacturedSolution(int dim, const Material& m, double wavenumber)
-  : dim_(dim), omega_(wavenumber), mu_(m.shearModulus())
+SmoothManufacturedSolution::SmoothManufacturedSolution(int dim, const Material& m,
+                                                       double wavenumber)
+    : dim_(dim), omega_(wavenumber), mu_(m.shearModulus())
 {
   SC_THROW_IF(!(wavenumber > 0.0), InputError,
               "'Problem/Manufactured wavenumber' must be > 0 (got " << wavenumber << ").");
   SC_THROW_IF(m.poissonRatio <= 0.0, InputError,
               "the manufactured solution u = u0 + (1/λ)∇φ needs λ > 0, i.e. 'Material/Poisson "
-              "ratio' > 0 (got " << m.poissonRatio << ").");
+              "ratio' > 0 (got "
+                  << m.poissonRatio << ").");
   // 1/λ = (1 − 2ν)/(2μν) for plane strain and 3D alike; exactly 0 at ν = 0.5. Plane stress
   // has the effective λ* = 2μν/(1 − ν) (c_d = λ*/(2λ* + 2μ) = ν/(1 + ν)).
-  const double numerator = dim == 2 && m.planeStress ? 1.0 - m.poissonRatio : 1.0 - 2.0 * m.poissonRatio;
+  const double numerator =
+      dim == 2 && m.planeStress ? 1.0 - m.poissonRatio : 1.0 - 2.0 * m.poissonRatio;
   inverseLambda_ = numerator / (2.0 * mu_ * m.poissonRatio);
 }
 
@@ -85,16 +88,15 @@ void SmoothManufacturedSolution::phiDerivatives(const double* x, double* grad, d
     s[i] = std::sin(p * x[i]);
     c[i] = std::cos(p * x[i]);
   }
-  // φ = Π sin(ω x_i): ∂_i φ = ω c_i Π_{j≠i} s_j, ∂_i∂_i φ = −ω² φ, ∂_i∂_j φ = ω² c_i c_j Π_{k≠i,j} s_k.
+  // φ = Π sin(ω x_i): ∂_i φ = ω c_i Π_{j≠i} s_j, ∂_i∂_i φ = −ω² φ, ∂_i∂_j φ = ω² c_i c_j Π_{k≠i,j}
+  // s_k.
   for (int i = 0; i < d; ++i) {
     grad[i] = p * c[i];
     for (int j = 0; j < d; ++j) {
-      if (j != i)
-        grad[i] *= s[j];
+      if (j != i) grad[i] *= s[j];
       double h = (i == j) ? -p * p * s[i] : p * p * c[i] * c[j];
       for (int k = 0; k < d; ++k)
-        if (k != i && k != j)
-          h *= s[k];
+        if (k != i && k != j) h *= s[k];
       hess[i * d + j] = h;
     }
   }
@@ -129,8 +131,8 @@ void SmoothManufacturedSolution::stress(const double* x, double* sigma) const
     laplacePhi += hp[i * d + i];
   for (int i = 0; i < d; ++i)
     for (int j = 0; j < d; ++j)
-      sigma[i * d + j] = mu_ * (g[i * d + j] + g[j * d + i]) + 2.0 * mu_ * inverseLambda_ * hp[i * d + j] +
-                         (i == j ? laplacePhi : 0.0);
+      sigma[i * d + j] = mu_ * (g[i * d + j] + g[j * d + i]) +
+                         2.0 * mu_ * inverseLambda_ * hp[i * d + j] + (i == j ? laplacePhi : 0.0);
 }
 
 void SmoothManufacturedSolution::rotation(const double* x, double* theta) const
@@ -171,11 +173,12 @@ double L(int i, int j)
 }  // namespace
 
 LinearPatchSolution::LinearPatchSolution(int dim, const Material& material)
-  : dim_(dim), material_(material)
+    : dim_(dim), material_(material)
 {
   SC_THROW_IF(material.poissonRatio >= 0.5 && !(dim == 2 && material.planeStress), InputError,
               "the linear patch solution is built from u through Hooke's law and needs ν < 0.5 "
-              "(got " << material.poissonRatio << ").");
+              "(got "
+                  << material.poissonRatio << ").");
 }
 
 double LinearPatchSolution::lameLambda() const
@@ -250,11 +253,12 @@ std::unique_ptr<ExactSolution> createExactSolution(const std::string& name, int 
 {
   if (name == "Manufactured smooth")
     return std::make_unique<SmoothManufacturedSolution>(dim, material, wavenumber);
-  if (name == "Linear patch")
-    return std::make_unique<LinearPatchSolution>(dim, material);
-  SC_THROW_IF(name != "None", InputError,
-              "'Problem/Exact solution' = '" << name
-                  << "' is not valid. Valid values: 'None', 'Manufactured smooth', 'Linear patch'.");
+  if (name == "Linear patch") return std::make_unique<LinearPatchSolution>(dim, material);
+  SC_THROW_IF(
+      name != "None", InputError,
+      "'Problem/Exact solution' = '"
+          << name
+          << "' is not valid. Valid values: 'None', 'Manufactured smooth', 'Linear patch'.");
   return nullptr;
 }
 

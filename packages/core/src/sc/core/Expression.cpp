@@ -15,12 +15,14 @@ namespace sc::core {
 namespace {
 
 const char* const kWhatIsValid =
-    "variables x, y, z (z = 0 in 2D) and t (the load step's time), the constant pi, functions such as sin, cos, tan, sqrt, "
+    "variables x, y, z (z = 0 in 2D) and t (the load step's time), the constant pi, functions such "
+    "as sin, cos, tan, sqrt, "
     "exp, ln, log10, abs, sign, operators + - * / ^, comparisons and a ? b : c; no commas";
 
 bool isIdentifier(const std::string& token)
 {
-  return !token.empty() && (std::isalpha(static_cast<unsigned char>(token[0])) || token[0] == '_') &&
+  return !token.empty() &&
+         (std::isalpha(static_cast<unsigned char>(token[0])) || token[0] == '_') &&
          std::all_of(token.begin(), token.end(), [](char c) {
            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
          });
@@ -52,7 +54,7 @@ struct Expression::Impl {
 };
 
 Expression::Expression(const std::string& formula, const std::string& key)
-  : impl_(std::make_shared<Impl>())
+    : impl_(std::make_shared<Impl>())
 {
   Impl& I = *impl_;
   I.formula = formula;
@@ -76,7 +78,8 @@ Expression::Expression(const std::string& formula, const std::string& key)
       hint << " ('" << e.GetToken() << "' is not a variable, constant or function)";
     // An unbalanced parenthesis is most often a comma inside a formula, at which the deck's
     // Array(string) was split.
-    if (std::count(formula.begin(), formula.end(), '(') != std::count(formula.begin(), formula.end(), ')'))
+    if (std::count(formula.begin(), formula.end(), '(') !=
+        std::count(formula.begin(), formula.end(), ')'))
       hint << " (unbalanced parentheses: a formula cannot contain a comma, the array is split at "
            << "commas; write min(a, b) as a < b ? a : b)";
     SC_THROW_IF(true, InputError,
@@ -106,8 +109,10 @@ double Expression::operator()(const double* x, int dim) const
   }
   SC_THROW_IF(!std::isfinite(v), InputError,
               I.key << " = '" << I.formula << "' evaluates to "
-                    << (std::isnan(v) ? "NaN" : v > 0 ? "inf" : "-inf") << " at the point "
-                    << pointText(x, dim) << " (t = " << g_loadTime << ")"
+                    << (std::isnan(v) ? "NaN"
+                        : v > 0       ? "inf"
+                                      : "-inf")
+                    << " at the point " << pointText(x, dim) << " (t = " << g_loadTime << ")"
                     << " of the body: give a formula that is finite wherever it is used.");
   return v;
 }
@@ -150,7 +155,7 @@ std::vector<Expression> compileExpressions(const Teuchos::Array<std::string>& fo
 
 // ---------------------------------------------------------------------------------------------
 ExpressionArrayValidator::ExpressionArrayValidator(std::vector<int> allowedSizes)
-  : sizes_(std::move(allowedSizes))
+    : sizes_(std::move(allowedSizes))
 {
 }
 
@@ -169,7 +174,8 @@ void ExpressionArrayValidator::validate(const Teuchos::ParameterEntry& entry,
   const std::string key = sublistName + "/" + paramName;
   const Teuchos::any& any = entry.getAny(false);
   SC_THROW_IF(any.type() != typeid(Teuchos::Array<std::string>), InputError,
-              "'" << key << "' must be an Array(string) of formulas such as \"{0, -9.81*(2 - y)}\".");
+              "'" << key
+                  << "' must be an Array(string) of formulas such as \"{0, -9.81*(2 - y)}\".");
   const auto& formulas = Teuchos::any_cast<Teuchos::Array<std::string>>(any);
   const int n = static_cast<int>(formulas.size());
   if (!sizes_.empty() && std::find(sizes_.begin(), sizes_.end(), n) == sizes_.end()) {

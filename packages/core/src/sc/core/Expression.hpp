@@ -5,8 +5,9 @@
 // at the quadrature points where the data enters the system.
 //
 // Variables: x, y, z (z = 0 in 2D) and t, the time of the current load step (docs/theory.md
-// §"Load steps"; t = 1 in a run without load steps); constant: pi. muparser's functions (sin, cos, tan, asin,
-// acos, atan, sinh, cosh, tanh, sqrt, exp, ln, log10, abs, sign, rint, ...), the operators
+// §"Load steps"; t = 1 in a run without load steps); constant: pi. muparser's functions (sin, cos,
+// tan, asin, acos, atan, sinh, cosh, tanh, sqrt, exp, ln, log10, abs, sign, rint, ...), the
+// operators
 // + - * / ^, comparisons and the conditional a ? b : c. A deck's Array(string) is split at
 // commas by Teuchos, so a formula cannot contain a comma (write min(a, b) as a < b ? a : b).
 //

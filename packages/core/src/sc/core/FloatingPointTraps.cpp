@@ -13,14 +13,19 @@ namespace {
 
 constexpr int kTrapped = FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW;
 
-void write(const char* text) { [[maybe_unused]] auto n = ::write(STDERR_FILENO, text, std::strlen(text)); }
+void write(const char* text)
+{
+  [[maybe_unused]] auto n = ::write(STDERR_FILENO, text, std::strlen(text));
+}
 
 // Async-signal-safe as far as glibc allows: write(2) and backtrace_symbols_fd only.
 void reportFloatingPointException(int, siginfo_t* info, void*)
 {
   const char* what = "floating-point exception";
   switch (info ? info->si_code : 0) {
-  case FPE_FLTINV: what = "invalid floating-point operation (0/0, inf-inf, a NaN compared, ...)"; break;
+  case FPE_FLTINV:
+    what = "invalid floating-point operation (0/0, inf-inf, a NaN compared, ...)";
+    break;
   case FPE_FLTDIV: what = "floating-point division by zero"; break;
   case FPE_FLTOVF: what = "floating-point overflow"; break;
   case FPE_INTDIV: what = "integer division by zero"; break;
@@ -51,8 +56,7 @@ void enableFloatingPointTraps()
 bool enableFloatingPointTrapsFromEnvironment()
 {
   const char* env = std::getenv("SC_TRAP_FPE");
-  if (!env || std::strcmp(env, "1") != 0)
-    return false;
+  if (!env || std::strcmp(env, "1") != 0) return false;
   enableFloatingPointTraps();
   return true;
 }

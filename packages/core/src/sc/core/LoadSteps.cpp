@@ -43,32 +43,33 @@ LoadSteps LoadSteps::fromParameters(const Teuchos::ParameterList& list, int dime
     s.given = true;
     s.times.assign(times.begin(), times.end());
     SC_THROW_IF(!(s.times[0] > 0.0) || !std::isfinite(s.times[0]), InputError,
-                "'Load steps/Times' starts at " << s.times[0]
+                "'Load steps/Times' starts at "
+                    << s.times[0]
                     << ": the first step's time must be positive and finite (t = 0 is the "
                        "unloaded state).");
     for (std::size_t i = 1; i < s.times.size(); ++i)
       SC_THROW_IF(!(s.times[i] > s.times[i - 1]) || !std::isfinite(s.times[i]), InputError,
-                  "'Load steps/Times' entry " << i + 1 << " (" << s.times[i]
-                      << ") does not follow entry " << i << " (" << s.times[i - 1]
-                      << "): the times must increase strictly.");
+                  "'Load steps/Times' entry "
+                      << i + 1 << " (" << s.times[i] << ") does not follow entry " << i << " ("
+                      << s.times[i - 1] << "): the times must increase strictly.");
   }
   s.cyclesPerLaterStep = list.get<int>("Cycles per later step");
   const auto obstacle = list.get<Teuchos::Array<double>>("Obstacle displacement");
   s.obstacleDisplacement.assign(obstacle.begin(), obstacle.end());
   SC_THROW_IF(!s.obstacleDisplacement.empty() &&
-                  s.obstacleDisplacement.size() != static_cast<std::size_t>(s.numSteps() * dimension),
+                  s.obstacleDisplacement.size() !=
+                      static_cast<std::size_t>(s.numSteps() * dimension),
               InputError,
-              "'Load steps/Obstacle displacement' has " << s.obstacleDisplacement.size()
-                  << " numbers, but " << s.numSteps() << " step(s) in " << dimension
-                  << "D need " << s.numSteps() * dimension
+              "'Load steps/Obstacle displacement' has "
+                  << s.obstacleDisplacement.size() << " numbers, but " << s.numSteps()
+                  << " step(s) in " << dimension << "D need " << s.numSteps() * dimension
                   << " (one row of " << dimension << " per entry of 'Load steps/Times').");
   return s;
 }
 
 std::vector<double> LoadSteps::obstacleDisplacementAt(int step, int dimension) const
 {
-  if (obstacleDisplacement.empty())
-    return std::vector<double>(dimension, 0.0);
+  if (obstacleDisplacement.empty()) return std::vector<double>(dimension, 0.0);
   const auto first = obstacleDisplacement.begin() + static_cast<std::ptrdiff_t>(step * dimension);
   return {first, first + dimension};
 }

@@ -49,11 +49,9 @@ std::vector<std::string> keysOf(const Teuchos::ParameterList& list)
 // "sublist").
 std::string typeOf(const Teuchos::ParameterEntry& e)
 {
-  if (e.isList())
-    return "sublist";
+  if (e.isList()) return "sublist";
   const std::string t = e.getAny(false).typeName();
-  if (t == "std::string" || t.find("basic_string") != std::string::npos)
-    return "string";
+  if (t == "std::string" || t.find("basic_string") != std::string::npos) return "string";
   return t;
 }
 
@@ -69,10 +67,8 @@ std::string valueOf(const Teuchos::ParameterEntry& e)
 
 std::string formatReal(double v)
 {
-  if (v >= kInfinity)
-    return "inf";
-  if (v <= -kInfinity)
-    return "-inf";
+  if (v >= kInfinity) return "inf";
+  if (v <= -kInfinity) return "-inf";
   std::ostringstream os;
   os << std::setprecision(12) << v;
   return os.str();
@@ -157,8 +153,7 @@ void fillDefaults(Teuchos::ParameterList& user, const Teuchos::ParameterList& va
   for (auto it = valid.begin(); it != valid.end(); ++it) {
     const std::string& name = valid.name(it);
     const Teuchos::ParameterEntry& ve = valid.entry(it);
-    if (name == kTemplateSublist)
-      continue;
+    if (name == kTemplateSublist) continue;
     if (ve.isList()) {
       fillDefaults(user.sublist(name, false, ve.docString()),
                    Teuchos::getValue<Teuchos::ParameterList>(ve));
@@ -186,12 +181,13 @@ void checkList(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid
     if (!valid.isParameter(name)) {
       const std::vector<std::string> validKeys = keysOf(valid);
       const std::string suggestion = closestMatch(name, validKeys);
-      SC_THROW_IF(true, InputError,
-                  origin << ": unknown key '" << joinPath(path, name) << "'"
-                         << (suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)")
-                         << ". Valid keys in '" << (path.empty() ? "(top level)" : path)
-                         << "': " << quotedList(validKeys)
-                         << ". 'stresscontact --print-parameters' lists them with their documentation.");
+      SC_THROW_IF(
+          true, InputError,
+          origin << ": unknown key '" << joinPath(path, name) << "'"
+                 << (suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)")
+                 << ". Valid keys in '" << (path.empty() ? "(top level)" : path)
+                 << "': " << quotedList(validKeys)
+                 << ". 'stresscontact --print-parameters' lists them with their documentation.");
     }
     checkEntry(user, name, valid.getEntry(name), path, origin);
   }
@@ -207,7 +203,7 @@ const T* anyPtr(const Teuchos::ParameterEntry& e)
 
 // ---------------------------------------------------------------------------------------------
 RealRangeValidator::RealRangeValidator(double lower, bool lowerOpen, double upper, bool upperOpen)
-  : lower_(lower), upper_(upper), lowerOpen_(lowerOpen), upperOpen_(upperOpen)
+    : lower_(lower), upper_(upper), lowerOpen_(lowerOpen), upperOpen_(upperOpen)
 {
 }
 
@@ -246,23 +242,19 @@ void IntRangeValidator::printDoc(const std::string& doc, std::ostream& out) cons
   out << "# " << doc << "\n# Valid range: [" << lower_ << ", " << upper_ << "]\n";
 }
 
-void IntRangeValidator::validate(const Teuchos::ParameterEntry& entry,
-                                 const std::string& paramName,
+void IntRangeValidator::validate(const Teuchos::ParameterEntry& entry, const std::string& paramName,
                                  const std::string& sublistName) const
 {
   const int* v = anyPtr<int>(entry);
   SC_THROW_IF(!v, InputError,
-              "'" << sublistName << "/" << paramName << "' must be an int, got "
-                  << valueOf(entry));
+              "'" << sublistName << "/" << paramName << "' must be an int, got " << valueOf(entry));
   SC_THROW_IF(*v < lower_ || *v > upper_, InputError,
               "'" << sublistName << "/" << paramName << "' = " << *v
                   << " is out of range: valid values are integers in [" << lower_ << ", " << upper_
                   << "].");
 }
 
-ChoiceValidator::ChoiceValidator(std::vector<std::string> choices) : choices_(std::move(choices))
-{
-}
+ChoiceValidator::ChoiceValidator(std::vector<std::string> choices) : choices_(std::move(choices)) {}
 
 void ChoiceValidator::printDoc(const std::string& doc, std::ostream& out) const
 {
@@ -291,7 +283,7 @@ void ChoiceValidator::validate(const Teuchos::ParameterEntry& entry, const std::
 }
 
 RealArrayValidator::RealArrayValidator(std::vector<int> allowedSizes)
-  : sizes_(std::move(allowedSizes))
+    : sizes_(std::move(allowedSizes))
 {
 }
 
@@ -317,8 +309,8 @@ void RealArrayValidator::validate(const Teuchos::ParameterEntry& entry,
     for (std::size_t i = 0; i < sizes_.size(); ++i)
       os << (i ? " or " : "") << sizes_[i];
     SC_THROW_IF(true, InputError,
-                "'" << sublistName << "/" << paramName << "' = " << valueOf(entry) << " has "
-                    << n << " entries; it must have " << os.str() << ".");
+                "'" << sublistName << "/" << paramName << "' = " << valueOf(entry) << " has " << n
+                    << " entries; it must have " << os.str() << ".");
   }
   for (double x : *v)
     SC_THROW_IF(!std::isfinite(x), InputError,
@@ -328,8 +320,7 @@ void RealArrayValidator::validate(const Teuchos::ParameterEntry& entry,
 
 // ---------------------------------------------------------------------------------------------
 void declareReal(Teuchos::ParameterList& list, const std::string& name, double defaultValue,
-                 const std::string& doc, double lower, bool lowerOpen, double upper,
-                 bool upperOpen)
+                 const std::string& doc, double lower, bool lowerOpen, double upper, bool upperOpen)
 {
   list.set(name, defaultValue, doc,
            Teuchos::rcp(new RealRangeValidator(lower, lowerOpen, upper, upperOpen)));
@@ -364,8 +355,7 @@ void declareRealArray(Teuchos::ParameterList& list, const std::string& name,
                       const Teuchos::Array<double>& defaultValue, const std::string& doc,
                       std::vector<int> allowedSizes)
 {
-  list.set(name, defaultValue, doc,
-           Teuchos::rcp(new RealArrayValidator(std::move(allowedSizes))));
+  list.set(name, defaultValue, doc, Teuchos::rcp(new RealArrayValidator(std::move(allowedSizes))));
 }
 
 void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
@@ -380,8 +370,7 @@ namespace {
 std::string trimmed(const std::string& text)
 {
   const auto first = text.find_first_not_of(" \t\n\r");
-  if (first == std::string::npos)
-    return "";
+  if (first == std::string::npos) return "";
   const auto last = text.find_last_not_of(" \t\n\r");
   return text.substr(first, last - first + 1);
 }
@@ -389,8 +378,7 @@ std::string trimmed(const std::string& text)
 std::string checkDoubleText(const std::string& raw, double* out)
 {
   const std::string t = trimmed(raw);
-  if (t.empty())
-    return "empty value";
+  if (t.empty()) return "empty value";
   errno = 0;
   char* end = nullptr;
   double v = 0;
@@ -400,34 +388,27 @@ std::string checkDoubleText(const std::string& raw, double* out)
     FloatingPointTrapsSuspended strtodMayOverflow;
     v = std::strtod(t.c_str(), &end);
   }
-  if (end == t.c_str())
-    return "not a number";
-  if (*end != '\0')
-    return "trailing characters '" + std::string(end) + "'";
+  if (end == t.c_str()) return "not a number";
+  if (*end != '\0') return "trailing characters '" + std::string(end) + "'";
   if (!std::isfinite(v))
     return errno == ERANGE ? "out of the range of double" : "not a finite number";
-  if (out)
-    *out = v;
+  if (out) *out = v;
   return "";
 }
 
 std::string checkIntText(const std::string& raw, int* out)
 {
   const std::string t = trimmed(raw);
-  if (t.empty())
-    return "empty value";
+  if (t.empty()) return "empty value";
   errno = 0;
   char* end = nullptr;
   const long long v = std::strtoll(t.c_str(), &end, 10);
-  if (end == t.c_str())
-    return "not an integer";
-  if (*end != '\0')
-    return "trailing characters '" + std::string(end) + "'";
+  if (end == t.c_str()) return "not an integer";
+  if (*end != '\0') return "trailing characters '" + std::string(end) + "'";
   if (errno == ERANGE || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
     return "out of the range of int [" + std::to_string(std::numeric_limits<int>::min()) + ", " +
            std::to_string(std::numeric_limits<int>::max()) + "]";
-  if (out)
-    *out = static_cast<int>(v);
+  if (out) *out = static_cast<int>(v);
   return "";
 }
 
@@ -437,8 +418,7 @@ std::string checkBoolText(const std::string& raw)
   std::transform(t.begin(), t.end(), t.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   for (const char* ok : {"true", "false", "yes", "no", "1", "0"})
-    if (t == ok)
-      return "";
+    if (t == ok) return "";
   return "expected true or false";
 }
 
@@ -450,18 +430,15 @@ std::string checkArrayText(const std::string& raw, F element)
   if (t.size() < 2 || t.front() != '{' || t.back() != '}')
     return "an array is written in braces, e.g. {0, -0.01}";
   const std::string inner = t.substr(1, t.size() - 2);
-  if (trimmed(inner).empty())
-    return "";
+  if (trimmed(inner).empty()) return "";
   std::size_t start = 0, index = 1;
   while (true) {
     const auto comma = inner.find(',', start);
-    const std::string item = inner.substr(start, comma == std::string::npos ? std::string::npos
-                                                                            : comma - start);
+    const std::string item =
+        inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const std::string why = element(item);
-    if (!why.empty())
-      return "entry " + std::to_string(index) + " '" + trimmed(item) + "': " + why;
-    if (comma == std::string::npos)
-      return "";
+    if (!why.empty()) return "entry " + std::to_string(index) + " '" + trimmed(item) + "': " + why;
+    if (comma == std::string::npos) return "";
     start = comma + 1;
     ++index;
   }
@@ -481,13 +458,13 @@ std::string withoutTeuchosNoise(const std::string& message)
   bool first = true;
   for (std::string line; std::getline(in, line);) {
     const std::string t = trimmed(line);
-    if (t.empty() || t.rfind("Throw number", 0) == 0 || t.rfind("Throw test that evaluated", 0) == 0)
+    if (t.empty() || t.rfind("Throw number", 0) == 0 ||
+        t.rfind("Throw test that evaluated", 0) == 0)
       continue;
     // "/usr/include/trilinos/Teuchos_X.cpp:123:" alone or as the prefix of the sentence
     static const std::regex source(R"(^\S+\.(cpp|hpp|h):[0-9]+:\s*)");
     const std::string sentence = std::regex_replace(t, source, "");
-    if (sentence.empty())
-      continue;
+    if (sentence.empty()) continue;
     out << (first ? "" : " ") << sentence;
     first = false;
   }
@@ -527,16 +504,14 @@ int xmlNestingDepth(const std::string& text)
     for (char quote = 0; j < n; ++j) {
       const char c = text[j];
       if (quote != 0) {
-        if (c == quote)
-          quote = 0;
+        if (c == quote) quote = 0;
       } else if (c == '"' || c == '\'') {
         quote = c;
       } else if (c == '>') {
         break;
       }
     }
-    if (j >= n)
-      break;
+    if (j >= n) break;
     if (text[i + 1] == '/')
       depth = std::max(0, depth - 1);
     else if (text[j - 1] == '/')
@@ -568,8 +543,7 @@ void checkXmlList(const Teuchos::XMLObject& list, const std::string& path, const
       checkXmlList(child, keyPath, file);
       continue;
     }
-    if (!child.hasAttribute("type") || !child.hasAttribute("value"))
-      continue;
+    if (!child.hasAttribute("type") || !child.hasAttribute("value")) continue;
     const std::string type = child.getAttribute("type"), text = child.getAttribute("value");
     const std::string why = checkValueText(type, text);
     SC_THROW_IF(!why.empty(), InputError,
@@ -582,12 +556,9 @@ void checkXmlList(const Teuchos::XMLObject& list, const std::string& path, const
 
 std::string checkValueText(const std::string& type, const std::string& text)
 {
-  if (type == "double")
-    return checkDoubleText(text, nullptr);
-  if (type == "int")
-    return checkIntText(text, nullptr);
-  if (type == "bool")
-    return checkBoolText(text);
+  if (type == "double") return checkDoubleText(text, nullptr);
+  if (type == "int") return checkIntText(text, nullptr);
+  if (type == "bool") return checkBoolText(text);
   if (type == "Array(double)")
     return checkArrayText(text, [](const std::string& x) { return checkDoubleText(x, nullptr); });
   if (type == "Array(int)")
@@ -650,9 +621,9 @@ Teuchos::RCP<Teuchos::ParameterList> readParameterFile(const std::string& path)
   // A UTF-8 byte-order mark (some Windows editors write one) is not XML to Teuchos' reader, whose
   // message ("character data outside of an enclosing tag") did not mention it: it is skipped. A
   // UTF-16 deck is refused by name.
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
-    text.erase(0, 3);
-  SC_THROW_IF(text.compare(0, 2, "\xFF\xFE") == 0 || text.compare(0, 2, "\xFE\xFF") == 0, InputError,
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  SC_THROW_IF(text.compare(0, 2, "\xFF\xFE") == 0 || text.compare(0, 2, "\xFE\xFF") == 0,
+              InputError,
               "the input deck '" << path << "' is UTF-16 text (it starts with a UTF-16 byte-order "
                                  << "mark); save it as UTF-8.");
   {
@@ -709,7 +680,8 @@ void applyOverride(Teuchos::ParameterList& user, const Teuchos::ParameterList& v
       next = &v->sublist(parts[i]);
     SC_THROW_IF(!next, InputError,
                 "--set " << assignment << ": '" << joinPath(where, parts[i])
-                         << "' is not a sublist. Valid keys in '" << (where.empty() ? "(top level)" : where)
+                         << "' is not a sublist. Valid keys in '"
+                         << (where.empty() ? "(top level)" : where)
                          << "': " << quotedList(keysOf(*v)) << ".");
     v = next;
     u = &u->sublist(parts[i]);
@@ -719,8 +691,7 @@ void applyOverride(Teuchos::ParameterList& user, const Teuchos::ParameterList& v
   if (v->isSublist(key) || isTemplateList(*v)) {
     const Teuchos::ParameterList& sub =
         isTemplateList(*v) ? v->sublist(kTemplateSublist) : v->sublist(key);
-    const Teuchos::ParameterList& keys =
-        isTemplateList(sub) ? sub.sublist(kTemplateSublist) : sub;
+    const Teuchos::ParameterList& keys = isTemplateList(sub) ? sub.sublist(kTemplateSublist) : sub;
     SC_THROW_IF(true, InputError,
                 "--set " << assignment << ": '" << path << "' is a sublist, not a key; set one of "
                          << "its keys (--set \"" << path << (isTemplateList(sub) ? "/<name>" : "")
@@ -751,8 +722,8 @@ void applyOverride(Teuchos::ParameterList& user, const Teuchos::ParameterList& v
     }
   } catch (const std::exception& e) {
     SC_THROW_IF(true, InputError,
-                "--set " << assignment << ": '" << text << "' is not a valid " << type
-                         << " for '" << path << "' (" << e.what() << ").");
+                "--set " << assignment << ": '" << text << "' is not a valid " << type << " for '"
+                         << path << "' (" << e.what() << ").");
   }
 }
 
@@ -780,8 +751,7 @@ void printDocRec(const Teuchos::ParameterList& valid, const std::string& path, s
     const std::string keyPath = joinPath(path, name == kTemplateSublist ? "<name>" : name);
     if (e.isList()) {
       out << "\n[" << keyPath << "]";
-      if (!e.docString().empty())
-        out << "  " << e.docString();
+      if (!e.docString().empty()) out << "  " << e.docString();
       out << "\n";
       printDocRec(Teuchos::getValue<Teuchos::ParameterList>(e), keyPath, out);
       continue;
@@ -794,8 +764,7 @@ void printDocRec(const Teuchos::ParameterList& valid, const std::string& path, s
       std::string line;
       std::istringstream lines(doc.str());
       while (std::getline(lines, line))
-        if (line.size() > 2 && line != "# ")
-          out << "      " << line.substr(2) << "\n";
+        if (line.size() > 2 && line != "# ") out << "      " << line.substr(2) << "\n";
     }
   }
 }

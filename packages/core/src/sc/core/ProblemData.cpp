@@ -170,13 +170,13 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
     BoundaryCondition bc;
     bc.boundary = name;
     const std::string type = sub.get<std::string>("Type");
-    bc.type = type == "Displacement" ? BoundaryType::Displacement
-              : type == "Traction"   ? BoundaryType::Traction
-              : type == "Pressure"   ? BoundaryType::Pressure
-              : type == "Symmetry"   ? BoundaryType::Symmetry
+    bc.type = type == "Displacement"          ? BoundaryType::Displacement
+              : type == "Traction"            ? BoundaryType::Traction
+              : type == "Pressure"            ? BoundaryType::Pressure
+              : type == "Symmetry"            ? BoundaryType::Symmetry
               : type == "Normal displacement" ? BoundaryType::NormalDisplacement
-              : type == "Contact"    ? BoundaryType::Contact
-                                     : BoundaryType::Free;
+              : type == "Contact"             ? BoundaryType::Contact
+                                              : BoundaryType::Free;
     bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
     bc.valuesPerStep = toVector(sub.get<Teuchos::Array<double>>("Values per step"));
     bc.fromExactSolution = sub.get<std::string>("Data") == "Exact solution";
@@ -194,14 +194,17 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
     if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction ||
         bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement) {
       // Pressure and Normal displacement take one scalar (p, g).
-      const bool pressure = bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement;
-      const char* scalar = bc.type == BoundaryType::Pressure ? "the pressure p" : "the normal displacement g";
+      const bool pressure =
+          bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement;
+      const char* scalar =
+          bc.type == BoundaryType::Pressure ? "the pressure p" : "the normal displacement g";
       SC_THROW_IF(hasValue && hasExpression, InputError,
                   "'" << key << "/Value' and '" << key << "/Expression' are both given; give one "
                       << "of them (Value: constants, Expression: formulas of x, y, z).");
       SC_THROW_IF(bc.fromExactSolution && pressure, InputError,
                   "'" << key << "/Data' = 'Exact solution' is for Type Displacement or Traction; "
-                      << "Type " << type << " takes 'Value' or 'Expression' (one number or formula).");
+                      << "Type " << type
+                      << " takes 'Value' or 'Expression' (one number or formula).");
       SC_THROW_IF(bc.fromExactSolution && (hasValue || hasExpression), InputError,
                   "'" << key << "/Data' = 'Exact solution' takes the data from 'Problem/Exact "
                       << "solution', but '" << key << "/" << (hasValue ? "Value" : "Expression")
@@ -209,15 +212,19 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
       SC_THROW_IF(!bc.fromExactSolution && !hasValue && !hasExpression, InputError,
                   "'" << key << "' (Type " << type << ") has no data: give '" << key
                       << "/Value' (constants, e.g. "
-                      << (pressure ? "{1}" : dimension == 2 ? "{0, 0}" : "{0, 0, 0}")
+                      << (pressure         ? "{1}"
+                          : dimension == 2 ? "{0, 0}"
+                                           : "{0, 0, 0}")
                       << ") or '" << key << "/Expression' (formulas of x, y, z"
                       << (pressure ? "" : ", one per component") << ").");
       const std::size_t expected = pressure ? 1 : static_cast<std::size_t>(dimension);
-      const std::string what = pressure ? std::string("one value (") + scalar + ")" : "one value per dimension";
+      const std::string what =
+          pressure ? std::string("one value (") + scalar + ")" : "one value per dimension";
       SC_THROW_IF(!bc.valuesPerStep.empty() && bc.valuesPerStep.size() % expected != 0, InputError,
                   "'" << key << "/Values per step' has " << bc.valuesPerStep.size()
                       << " numbers, which is not a whole number of rows of " << expected
-                      << (pressure ? std::string(" (") + scalar + " per step)" : std::string(" (one value per dimension per step)"))
+                      << (pressure ? std::string(" (") + scalar + " per step)"
+                                   : std::string(" (one value per dimension per step)"))
                       << ".");
       SC_THROW_IF(!bc.value.empty() && bc.value.size() != expected, InputError,
                   "'" << key << "/Value' has " << bc.value.size() << " components, but "
@@ -231,7 +238,7 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                       << ": give " << (pressure ? "one formula" : "one formula per dimension")
                       << " (a formula cannot contain a comma: the array is split at commas).");
     } else {
-      const char* given = !bc.value.empty()        ? "Value"
+      const char* given = !bc.value.empty()           ? "Value"
                           : !bc.valuesPerStep.empty() ? "Values per step"
                           : hasExpression             ? "Expression"
                                                       : "Data";
@@ -248,13 +255,16 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
 void BoundaryConditions::checkStepTables(int numSteps, int dimension) const
 {
   for (const auto& c : conditions) {
-    if (c.valuesPerStep.empty())
-      continue;
-    const std::size_t row = c.type == BoundaryType::Pressure || c.type == BoundaryType::NormalDisplacement ? 1 : static_cast<std::size_t>(dimension);
+    if (c.valuesPerStep.empty()) continue;
+    const std::size_t row =
+        c.type == BoundaryType::Pressure || c.type == BoundaryType::NormalDisplacement
+            ? 1
+            : static_cast<std::size_t>(dimension);
     SC_THROW_IF(c.valuesPerStep.size() != row * static_cast<std::size_t>(numSteps), InputError,
                 "'Boundary Conditions/" << c.boundary << "/Values per step' has "
-                    << c.valuesPerStep.size() / row << " rows of " << row << ", but 'Load steps/Times' has "
-                    << numSteps << " entries: give one row per load step.");
+                                        << c.valuesPerStep.size() / row << " rows of " << row
+                                        << ", but 'Load steps/Times' has " << numSteps
+                                        << " entries: give one row per load step.");
   }
 }
 
@@ -262,9 +272,11 @@ BoundaryConditions BoundaryConditions::atStep(int step, int dimension) const
 {
   BoundaryConditions out = *this;
   for (auto& c : out.conditions) {
-    if (c.valuesPerStep.empty())
-      continue;
-    const std::size_t row = c.type == BoundaryType::Pressure || c.type == BoundaryType::NormalDisplacement ? 1 : static_cast<std::size_t>(dimension);
+    if (c.valuesPerStep.empty()) continue;
+    const std::size_t row =
+        c.type == BoundaryType::Pressure || c.type == BoundaryType::NormalDisplacement
+            ? 1
+            : static_cast<std::size_t>(dimension);
     const auto first = c.valuesPerStep.begin() + static_cast<std::ptrdiff_t>(row * step);
     c.value.assign(first, first + static_cast<std::ptrdiff_t>(row));
   }
@@ -281,16 +293,14 @@ std::vector<std::string> BoundaryConditions::boundariesOfType(BoundaryType type)
 {
   std::vector<std::string> names;
   for (const auto& c : conditions)
-    if (c.type == type)
-      names.push_back(c.boundary);
+    if (c.type == type) names.push_back(c.boundary);
   return names;
 }
 
 const BoundaryCondition* BoundaryConditions::find(const std::string& boundary) const
 {
   for (const auto& c : conditions)
-    if (c.boundary == boundary)
-      return &c;
+    if (c.boundary == boundary) return &c;
   return nullptr;
 }
 
@@ -298,40 +308,38 @@ void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>&
                                                  const Material& material) const
 {
   // Plane stress (a 2D-only flag) keeps A I ≠ 0 at ν = 0.5.
-  if (material.poissonRatio < 0.5 || material.planeStress)
-    return;
+  if (material.poissonRatio < 0.5 || material.planeStress) return;
   for (const auto& name : meshBoundaries) {
     const auto it = std::find_if(conditions.begin(), conditions.end(),
                                  [&](const BoundaryCondition& c) { return c.boundary == name; });
-    if (it == conditions.end() ||
-        (it->type != BoundaryType::Displacement && !it->inNormalFrame()))
+    if (it == conditions.end() || (it->type != BoundaryType::Displacement && !it->inNormalFrame()))
       return;  // a traction (given, pressure, zero or contact) part fixes the mean pressure
   }
-  SC_THROW_IF(true, InputError,
-              "'Material/Poisson ratio' = 0.5 with a Displacement condition on every boundary part ("
-                  << joined(meshBoundaries)
-                  << (boundariesOfType(BoundaryType::Symmetry).empty() &&
-                              boundariesOfType(BoundaryType::NormalDisplacement).empty()
-                          ? ""
-                          : "; Symmetry and Normal displacement parts count as such: c I n = c n is normal")
-                  << "): the stress is then determined only up to a "
-                  << "constant pressure (the compliance of an incompressible material vanishes on "
-                  << "the identity) and the discrete problem is singular. Give at least one part "
-                  << "a Traction, Pressure, Free or Contact condition, or use a Poisson ratio below 0.5 "
-                  << "(e.g. 0.4999).");
+  SC_THROW_IF(
+      true, InputError,
+      "'Material/Poisson ratio' = 0.5 with a Displacement condition on every boundary part ("
+          << joined(meshBoundaries)
+          << (boundariesOfType(BoundaryType::Symmetry).empty() &&
+                      boundariesOfType(BoundaryType::NormalDisplacement).empty()
+                  ? ""
+                  : "; Symmetry and Normal displacement parts count as such: c I n = c n is normal")
+          << "): the stress is then determined only up to a "
+          << "constant pressure (the compliance of an incompressible material vanishes on "
+          << "the identity) and the discrete problem is singular. Give at least one part "
+          << "a Traction, Pressure, Free or Contact condition, or use a Poisson ratio below 0.5 "
+          << "(e.g. 0.4999).");
 }
 
 void BoundaryConditions::checkBoundaryNames(const std::vector<std::string>& meshBoundaries,
                                             const std::string& meshDescription) const
 {
   for (const auto& c : conditions) {
-    SC_THROW_IF(std::find(meshBoundaries.begin(), meshBoundaries.end(), c.boundary) ==
-                    meshBoundaries.end(),
-                InputError,
-                "'Boundary Conditions/" << c.boundary << "': the mesh (" << meshDescription
-                                        << ") has no boundary part named '" << c.boundary
-                                        << "'. Its boundary parts are: " << joined(meshBoundaries)
-                                        << ".");
+    SC_THROW_IF(
+        std::find(meshBoundaries.begin(), meshBoundaries.end(), c.boundary) == meshBoundaries.end(),
+        InputError,
+        "'Boundary Conditions/" << c.boundary << "': the mesh (" << meshDescription
+                                << ") has no boundary part named '" << c.boundary
+                                << "'. Its boundary parts are: " << joined(meshBoundaries) << ".");
   }
 }
 
@@ -340,8 +348,7 @@ namespace {
 double component(const std::vector<double>& value, const std::vector<Expression>& expression, int i,
                  const double* x, int dim)
 {
-  if (!expression.empty())
-    return expression[i](x, dim);
+  if (!expression.empty()) return expression[i](x, dim);
   return value.empty() ? 0.0 : value[i];
 }
 
@@ -386,8 +393,7 @@ void BoundaryCondition::evaluate(const double* x, const double* n, int dim,
       out[i] = g * n[i];
     break;
   }
-  default:
-    break;
+  default: break;
   }
 }
 
@@ -420,43 +426,45 @@ Teuchos::RCP<const Teuchos::ParameterList> BodyForce::getValidParameters()
   return valid;
 }
 
-BodyForce BodyForce::fromParameters(const Teuchos::ParameterList& pl, const ProblemSettings& problem)
+BodyForce BodyForce::fromParameters(const Teuchos::ParameterList& pl,
+                                    const ProblemSettings& problem)
 {
   BodyForce f;
   const int dim = problem.dimension;
   f.value = toVector(pl.get<Teuchos::Array<double>>("Value"));
-  f.expression =
-      compileExpressions(pl.get<Teuchos::Array<std::string>>("Expression"), "Body Force/Expression");
+  f.expression = compileExpressions(pl.get<Teuchos::Array<std::string>>("Expression"),
+                                    "Body Force/Expression");
   f.valuesPerStep = toVector(pl.get<Teuchos::Array<double>>("Values per step"));
   SC_THROW_IF(!f.value.empty() && !f.expression.empty(), InputError,
               "'Body Force/Value' and 'Body Force/Expression' are both given; give one of them "
               "(Value: constants, Expression: formulas of x, y, z).");
-  SC_THROW_IF(!f.valuesPerStep.empty() && (!f.value.empty() || !f.expression.empty()), InputError,
-              "'Body Force/Values per step' and 'Body Force/"
-                  << (f.value.empty() ? "Expression" : "Value")
-                  << "' are both given; give one of them (Values per step: one row per load step).");
+  SC_THROW_IF(
+      !f.valuesPerStep.empty() && (!f.value.empty() || !f.expression.empty()), InputError,
+      "'Body Force/Values per step' and 'Body Force/"
+          << (f.value.empty() ? "Expression" : "Value")
+          << "' are both given; give one of them (Values per step: one row per load step).");
   SC_THROW_IF(f.valuesPerStep.size() % static_cast<std::size_t>(dim) != 0, InputError,
-              "'Body Force/Values per step' has " << f.valuesPerStep.size()
-                  << " numbers, which is not a whole number of rows of " << dim
-                  << " (one value per dimension per step).");
+              "'Body Force/Values per step' has "
+                  << f.valuesPerStep.size() << " numbers, which is not a whole number of rows of "
+                  << dim << " (one value per dimension per step).");
   SC_THROW_IF(!f.valuesPerStep.empty() && problem.exactSolution != "None", InputError,
               "'Body Force/Values per step' is given, but 'Problem/Exact solution' = '"
                   << problem.exactSolution << "' defines the body force; remove one of them.");
   SC_THROW_IF(!f.value.empty() && static_cast<int>(f.value.size()) != dim, InputError,
-              "'Body Force/Value' has " << f.value.size() << " components, but Problem/Dimension is "
-                                        << dim << ": give one value per dimension.");
+              "'Body Force/Value' has " << f.value.size()
+                                        << " components, but Problem/Dimension is " << dim
+                                        << ": give one value per dimension.");
   SC_THROW_IF(!f.expression.empty() && static_cast<int>(f.expression.size()) != dim, InputError,
-              "'Body Force/Expression' has " << f.expression.size()
-                  << " formulas, but Problem/Dimension is " << dim
+              "'Body Force/Expression' has "
+                  << f.expression.size() << " formulas, but Problem/Dimension is " << dim
                   << ": give one formula per dimension (a formula cannot contain a comma: the "
                   << "array is split at commas).");
-  SC_THROW_IF((!f.value.empty() || !f.expression.empty()) && problem.exactSolution != "None",
-              InputError,
-              "'Body Force/" << (f.value.empty() ? "Expression" : "Value")
-                             << "' is given, but 'Problem/Exact solution' = '"
-                             << problem.exactSolution
-                             << "' defines the body force (f = −div σ of the exact solution); "
-                             << "remove the Body Force or set 'Problem/Exact solution' = 'None'.");
+  SC_THROW_IF(
+      (!f.value.empty() || !f.expression.empty()) && problem.exactSolution != "None", InputError,
+      "'Body Force/" << (f.value.empty() ? "Expression" : "Value")
+                     << "' is given, but 'Problem/Exact solution' = '" << problem.exactSolution
+                     << "' defines the body force (f = −div σ of the exact solution); "
+                     << "remove the Body Force or set 'Problem/Exact solution' = 'None'.");
   return f;
 }
 
@@ -466,8 +474,9 @@ void BodyForce::checkStepTable(int numSteps, int dimension) const
                   valuesPerStep.size() != static_cast<std::size_t>(numSteps * dimension),
               InputError,
               "'Body Force/Values per step' has " << valuesPerStep.size() / dimension << " rows of "
-                  << dimension << ", but 'Load steps/Times' has " << numSteps
-                  << " entries: give one row per load step.");
+                                                  << dimension << ", but 'Load steps/Times' has "
+                                                  << numSteps
+                                                  << " entries: give one row per load step.");
 }
 
 BodyForce BodyForce::atStep(int step, int dimension) const

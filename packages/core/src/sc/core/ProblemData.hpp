@@ -21,8 +21,8 @@
 namespace sc::core {
 
 struct ProblemSettings {
-  int dimension{};                 ///< 2 (plane strain) or 3
-  std::string exactSolution;       ///< name for createExactSolution (ExactSolution.hpp)
+  int dimension{};                  ///< 2 (plane strain) or 3
+  std::string exactSolution;        ///< name for createExactSolution (ExactSolution.hpp)
   double manufacturedWavenumber{};  ///< ω of the smooth manufactured solution
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   static ProblemSettings fromParameters(const Teuchos::ParameterList& problemList);
@@ -42,8 +42,7 @@ struct Material {
   /// ν / (1 + ν) for plane stress, where Aσ = ((1 + ν)σ − ν tr(σ) I)/E.
   double complianceCoefficient(int dim) const
   {
-    if (dim == 2 && planeStress)
-      return poissonRatio / (1.0 + poissonRatio);
+    if (dim == 2 && planeStress) return poissonRatio / (1.0 + poissonRatio);
     return poissonRatio / (1.0 + (dim - 2) * poissonRatio);
   }
   /// Aτ:τ = (1/2μ)(|τ|² − c_d (tr τ)²) for a d×d row-major τ: the compliance energy density, in
@@ -58,16 +57,21 @@ struct Material {
     return (tt - complianceCoefficient(dim) * trace * trace) / (2.0 * shearModulus());
   }
   /// Plane-strain modulus E* = E/(1 − ν²) used by the Hertz formulas (docs/theory.md §"Scenes").
-  double planeStrainModulus() const
-  {
-    return youngModulus / (1.0 - poissonRatio * poissonRatio);
-  }
+  double planeStrainModulus() const { return youngModulus / (1.0 - poissonRatio * poissonRatio); }
   static Teuchos::RCP<const Teuchos::ParameterList> getValidParameters();
   /// `dimension` = Problem/Dimension: Plane = Stress in 3D is an InputError.
   static Material fromParameters(const Teuchos::ParameterList& materialList, int dimension = 2);
 };
 
-enum class BoundaryType { Displacement, Traction, Pressure, Symmetry, NormalDisplacement, Contact, Free };
+enum class BoundaryType {
+  Displacement,
+  Traction,
+  Pressure,
+  Symmetry,
+  NormalDisplacement,
+  Contact,
+  Free
+};
 std::string toString(BoundaryType type);
 
 class ExactSolution;
@@ -78,10 +82,10 @@ class ExactSolution;
 /// one) or g (Normal displacement: u·n = g and zero tangential traction, one). Symmetry (u·n =
 /// 0, zero tangential traction), Contact and Free take no data.
 struct BoundaryCondition {
-  std::string boundary;       ///< name of the boundary part (mesh physical name)
+  std::string boundary;  ///< name of the boundary part (mesh physical name)
   BoundaryType type = BoundaryType::Free;
-  std::vector<double> value;  ///< constant data; empty (and no expression) means zero
-  bool fromExactSolution = false;  ///< u_D or t from Problem/Exact solution instead of value
+  std::vector<double> value;           ///< constant data; empty (and no expression) means zero
+  bool fromExactSolution = false;      ///< u_D or t from Problem/Exact solution instead of value
   std::vector<Expression> expression;  ///< formulas instead of value (one per component)
   /// "Values per step": the constant data of every load step, row after row (docs/theory.md
   /// §"Load steps"); `value` is set from row n for step n (BoundaryConditions::atStep).
@@ -89,7 +93,8 @@ struct BoundaryCondition {
 
   /// The data at the boundary point x with the outward unit normal n (d components): u_D
   /// (Displacement), t (Traction: the value, the formulas or σ(x)n of the exact solution),
-  /// −p(x) n (Pressure) or g(x) n (Normal displacement); zero for the other types. `exact` is needed when fromExactSolution.
+  /// −p(x) n (Pressure) or g(x) n (Normal displacement); zero for the other types. `exact` is
+  /// needed when fromExactSolution.
   void evaluate(const double* x, const double* n, int dim, const ExactSolution* exact,
                 double* out) const;
   /// True when the data is the constant zero (no formula, no exact solution).
@@ -100,8 +105,8 @@ struct BoundaryCondition {
     return type == BoundaryType::Symmetry || type == BoundaryType::NormalDisplacement;
   }
 };
-/// "Boundary Conditions/<boundary name>/{Type, Value, Expression, Data}". Boundary parts not named in the deck
-/// are traction-free.
+/// "Boundary Conditions/<boundary name>/{Type, Value, Expression, Data}". Boundary parts not named
+/// in the deck are traction-free.
 struct BoundaryConditions {
   std::vector<BoundaryCondition> conditions;
 

@@ -9,14 +9,14 @@
 namespace sc::core {
 
 PhaseTimers::PhaseTimers(Teuchos::RCP<const Teuchos::Comm<int>> comm)
-  : comm_(std::move(comm)), start_(Teuchos::Time::wallTime())
+    : comm_(std::move(comm)), start_(Teuchos::Time::wallTime())
 {
 }
 
 PhaseTimers::Scope::Scope(PhaseTimers& owner, std::string phase)
-  : owner_(owner), phase_(std::move(phase)),
-    teuchosTimer_(Teuchos::TimeMonitor::getNewCounter("StressContact: " + phase_)),
-    start_(Teuchos::Time::wallTime())
+    : owner_(owner), phase_(std::move(phase)),
+      teuchosTimer_(Teuchos::TimeMonitor::getNewCounter("StressContact: " + phase_)),
+      start_(Teuchos::Time::wallTime())
 {
   teuchosTimer_->start();
 }
@@ -24,8 +24,7 @@ PhaseTimers::Scope::Scope(PhaseTimers& owner, std::string phase)
 PhaseTimers::Scope::~Scope()
 {
   teuchosTimer_->stop();
-  if (owner_.current_.find(phase_) == owner_.current_.end())
-    owner_.order_.push_back(phase_);
+  if (owner_.current_.find(phase_) == owner_.current_.end()) owner_.order_.push_back(phase_);
   owner_.current_[phase_] += Teuchos::Time::wallTime() - start_;
 }
 

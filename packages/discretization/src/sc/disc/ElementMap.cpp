@@ -20,8 +20,7 @@ using CellTools = Intrepid2::CellTools<Device>;
 
 Teuchos::RCP<Basis> quadraticBasis(int d)
 {
-  if (d == 2)
-    return Teuchos::rcp(new Intrepid2::Basis_HGRAD_TRI_C2_FEM<Device, double, double>());
+  if (d == 2) return Teuchos::rcp(new Intrepid2::Basis_HGRAD_TRI_C2_FEM<Device, double, double>());
   return Teuchos::rcp(new Intrepid2::Basis_HGRAD_TET_C2_FEM<Device, double, double>());
 }
 
@@ -47,13 +46,13 @@ View nodeWorkset(const MixedElasticitySpace& space, int e)
 }  // namespace
 
 ElementMap::ElementMap(const MixedElasticitySpace& space, const View& refPoints)
-  : space_(space), d_(space.dim()), nq_(static_cast<int>(refPoints.extent(0))), refPoints_(refPoints)
+    : space_(space), d_(space.dim()), nq_(static_cast<int>(refPoints.extent(0))),
+      refPoints_(refPoints)
 {
   x_.assign(3 * static_cast<std::size_t>(nq_), 0.0);
   J_.assign(9 * static_cast<std::size_t>(nq_), 0.0);
   det_.assign(nq_, 0.0);
-  if (!space.curvedElements())
-    return;
+  if (!space.curvedElements()) return;
   auto basis = quadraticBasis(d_);
   const int nN = basis->getCardinality();
   p2Values_ = View("p2Values", nN, nq_);
@@ -112,7 +111,8 @@ void ElementMap::reinit(int e)
         J_[9 * q + 3 * i + j] = i < d_ && j < d_ ? jac(0, q, i, j) : 0.0;
     det_[q] = det(0, q);
     SC_THROW_IF(!(det_[q] > 0.0), core::InputError,
-                "the quadratic (curved-boundary) map of element " << e << " is not invertible "
+                "the quadratic (curved-boundary) map of element "
+                    << e << " is not invertible "
                     << "(det J = " << det_[q] << " at a quadrature point): the mesh is too coarse "
                     << "for the boundary's curvature. Make 'Mesh/Initial mesh size' smaller or set "
                     << "'Mesh/Geometry order' = 1.");
@@ -133,7 +133,8 @@ void ElementMap::inverseTranspose(int q, double G[3][3]) const
 
 void ElementMap::sideFrame(int q, int side, std::array<double, 3>& n, double& stretch) const
 {
-  SC_THROW_IF(sideTangents_.empty(), core::InternalError, "ElementMap::sideFrame needs a curved space");
+  SC_THROW_IF(sideTangents_.empty(), core::InternalError,
+              "ElementMap::sideFrame needs a curved space");
   const double* J = jacobian(q);
   auto apply = [&](const std::array<double, 3>& t) {
     std::array<double, 3> v{0, 0, 0};
@@ -160,7 +161,8 @@ void ElementMap::sideFrame(int q, int side, std::array<double, 3>& n, double& st
   const double sign = m.faceElements(f)[0] == element_ ? 1.0 : -1.0;
   const double dot = sign * (ns[0] * n[0] + ns[1] * n[1] + ns[2] * n[2]);
   SC_THROW_IF(!(dot > 0.0), core::InputError,
-              "the curved face " << f << " of element " << element_ << " turns by more than 90° "
+              "the curved face "
+                  << f << " of element " << element_ << " turns by more than 90° "
                   << "from its chord: the mesh is too coarse for the boundary's curvature. Make "
                   << "'Mesh/Initial mesh size' smaller or set 'Mesh/Geometry order' = 1.");
 }

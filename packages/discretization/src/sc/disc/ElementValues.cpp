@@ -20,10 +20,10 @@ using OrtView = Kokkos::DynRankView<Intrepid2::Orientation, Device>;
 
 // Reference values of both bases at a set of reference points, and per-element oriented copies.
 struct Tabulation {
-  View refPoints;             // (nq, d)
-  View rtRef, rtDivRef;       // (nRT, nq, d), (nRT, nq)
-  View pkRef;                 // (nP, nq)
-  View rtOr, rtDivOr, pkOr;   // oriented: (1, nRT, nq, d), (1, nRT, nq), (1, nP, nq)
+  View refPoints;            // (nq, d)
+  View rtRef, rtDivRef;      // (nRT, nq, d), (nRT, nq)
+  View pkRef;                // (nP, nq)
+  View rtOr, rtDivOr, pkOr;  // oriented: (1, nRT, nq, d), (1, nRT, nq), (1, nP, nq)
   OrtView ort{"ort", 1};
 
   void tabulate(const MixedElasticitySpace::Impl& impl, const View& points)
@@ -71,7 +71,7 @@ struct ElementValues::Impl {
 };
 
 ElementValues::ElementValues(const MixedElasticitySpace& space, int cubatureDegree)
-  : space_(space), impl_(std::make_unique<Impl>())
+    : space_(space), impl_(std::make_unique<Impl>())
 {
   const auto& si = space.impl();
   auto cub = Intrepid2::DefaultCubatureFactory::create<Device>(si.topology, cubatureDegree);
@@ -136,8 +136,7 @@ void ElementValues::fill(int e)
     for (int i = 0; i < 3; ++i)
       points_[q * 3 + i] = F.x(q)[i];
     weights_[q] = impl_->atPoints ? 0.0 : impl_->refWeights(q) * F.det(q);
-    if (F.curved())
-      measure_ += weights_[q];
+    if (F.curved()) measure_ += weights_[q];
   }
   // Contravariant Piola: φ = J φ̂ / det J, div φ = div̂ φ̂ / det J (also for the quadratic map, with
   // J and det J at each point).
@@ -162,14 +161,14 @@ void ElementValues::fill(int e)
 
 // ------------------------------------------------------------------------------- FaceValues
 struct FaceValues::Impl {
-  std::vector<Tabulation> sides;  // one per Intrepid2 side ordinal
+  std::vector<Tabulation> sides;                  // one per Intrepid2 side ordinal
   std::vector<std::unique_ptr<ElementMap>> maps;  // one per side
   View paramWeights;
   double paramMeasure = 0.0;
 };
 
 FaceValues::FaceValues(const MixedElasticitySpace& space, int cubatureDegree)
-  : space_(space), impl_(std::make_unique<Impl>())
+    : space_(space), impl_(std::make_unique<Impl>())
 {
   const auto& si = space.impl();
   const int d = si.dim;

@@ -80,13 +80,15 @@ std::vector<FaceDofPoint> stressFaceDofPoints(const MixedElasticitySpace& space,
   for (int l = 0; l < np; ++l) {
     int best = 0;
     for (int j = 1; j < nF; ++j)
-      if (std::abs(T[l * nF + j]) > std::abs(T[l * nF + best]))
-        best = j;
+      if (std::abs(T[l * nF + j]) > std::abs(T[l * nF + best])) best = j;
     const double s = T[l * nF + best];
     for (int j = 0; j < nF; ++j)
-      SC_THROW_IF(j != best && std::abs(T[l * nF + j]) > 1e-10 * std::abs(s), core::InternalError,
-                  "RT face DOFs of element " << e << " are not point values at the face lattice "
-                  "(the contact method needs nodal DOFs, docs/theory.md §\"Contact and friction\")");
+      SC_THROW_IF(
+          j != best && std::abs(T[l * nF + j]) > 1e-10 * std::abs(s), core::InternalError,
+          "RT face DOFs of element "
+              << e
+              << " are not point values at the face lattice "
+                 "(the contact method needs nodal DOFs, docs/theory.md §\"Contact and friction\")");
     SC_THROW_IF(used[best], core::InternalError, "two lattice points share face DOF " << best);
     used[best] = true;
     FaceDofPoint& p = points[best];
@@ -113,12 +115,11 @@ double minRelativeFaceDofWeight(int dim, int degree)
     cells[v] = v;
   for (int f = 0; f <= dim; ++f) {  // the face opposite vertex f
     for (int v = 0; v <= dim; ++v)
-      if (v != f)
-        faces.push_back(v);
+      if (v != f) faces.push_back(v);
     parts.push_back(0);
   }
-  auto mesh = Teuchos::rcp(new mesh::SimplexMesh(dim, x, cells, faces, parts, {"Boundary"},
-                                                 "reference simplex"));
+  auto mesh = Teuchos::rcp(
+      new mesh::SimplexMesh(dim, x, cells, faces, parts, {"Boundary"}, "reference simplex"));
   const MixedElasticitySpace space(mesh, degree, std::vector<int>{0}, 0);
   FaceValues fv(space, 2 * degree + 2);
   double worst = 1e300;

@@ -15,11 +15,11 @@ namespace sc::disc {
 class MixedElasticitySpace;
 
 struct FaceDofPoint {
-  int localDof = -1;            ///< element-local RT index (within one row block)
-  std::array<double, 3> x{};    ///< physical point p_j (on the curved face of a curved element)
+  int localDof = -1;                ///< element-local RT index (within one row block)
+  std::array<double, 3> x{};        ///< physical point p_j (on the curved face of a curved element)
   std::array<double, 3> xAffine{};  ///< the same reference point on the straight face (chord)
   std::array<double, 3> normal{};   ///< outward unit normal n(p_j) (varies on a curved face)
-  double scale = 0.0;           ///< s_j = (φ_j·n)(p_j), outward n
+  double scale = 0.0;               ///< s_j = (φ_j·n)(p_j), outward n
 };
 
 /// The DOF points of element `element`'s face opposite local vertex `localFace`. Throws

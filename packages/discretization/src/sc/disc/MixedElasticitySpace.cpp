@@ -30,11 +30,13 @@ MixedElasticitySpace::Impl::Impl(int d, int k) : dim(d)
     topology = shards::CellTopology(shards::getCellTopologyData<shards::Triangle<3>>());
     // Intrepid2's HDIV order n spans RT_{n-1} (docs/theory.md §"Mixed formulation"): order k+1 for
     // RT_k.
-    rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TRI_In_FEM<Device, double, double>(k + 1, rtPoints));
+    rt =
+        Teuchos::rcp(new Intrepid2::Basis_HDIV_TRI_In_FEM<Device, double, double>(k + 1, rtPoints));
     pk = Teuchos::rcp(new Intrepid2::Basis_HGRAD_TRI_Cn_FEM<Device, double, double>(k));
   } else {
     topology = shards::CellTopology(shards::getCellTopologyData<shards::Tetrahedron<4>>());
-    rt = Teuchos::rcp(new Intrepid2::Basis_HDIV_TET_In_FEM<Device, double, double>(k + 1, rtPoints));
+    rt =
+        Teuchos::rcp(new Intrepid2::Basis_HDIV_TET_In_FEM<Device, double, double>(k + 1, rtPoints));
     pk = Teuchos::rcp(new Intrepid2::Basis_HGRAD_TET_Cn_FEM<Device, double, double>(k));
   }
   // A side's vertices are all but one; the missing one names the mesh's local face.
@@ -61,14 +63,16 @@ Intrepid2::Orientation MixedElasticitySpace::Impl::orientation(const int* global
 MixedElasticitySpace::MixedElasticitySpace(Teuchos::RCP<const mesh::SimplexMesh> mesh, int degree,
                                            std::vector<int> elementOwner, int rank,
                                            Teuchos::RCP<const mesh::CurvedElements> curved)
-  : mesh_(std::move(mesh)), curved_(std::move(curved)), dim_(mesh_->dim()), degree_(degree), rank_(rank),
-    elementOwner_(std::move(elementOwner))
+    : mesh_(std::move(mesh)), curved_(std::move(curved)), dim_(mesh_->dim()), degree_(degree),
+      rank_(rank), elementOwner_(std::move(elementOwner))
 {
   SC_THROW_IF(degree < 1, core::InputError,
-              "'Discretization/Degree' = " << degree << ": the method needs k >= 1 (docs/theory.md §\"Mixed formulation\").");
+              "'Discretization/Degree' = "
+                  << degree
+                  << ": the method needs k >= 1 (docs/theory.md §\"Mixed formulation\").");
   SC_THROW_IF(static_cast<int>(elementOwner_.size()) != mesh_->numElements(), core::InternalError,
-              "partition has " << elementOwner_.size() << " entries for "
-                               << mesh_->numElements() << " elements");
+              "partition has " << elementOwner_.size() << " entries for " << mesh_->numElements()
+                               << " elements");
   SC_THROW_IF(!curved_.is_null() && &curved_->mesh() != mesh_.get(), core::InternalError,
               "MixedElasticitySpace: the curved geometry belongs to another mesh");
   impl_ = std::make_unique<Impl>(dim_, degree_);
@@ -76,8 +80,7 @@ MixedElasticitySpace::MixedElasticitySpace(Teuchos::RCP<const mesh::SimplexMesh>
   nDP_ = nCP_ = impl_->pk->getCardinality();
   nFaceRT_ = impl_->rt->getDofCount(dim_ - 1, 0);
   for (int e = 0; e < mesh_->numElements(); ++e)
-    if (elementOwner_[e] == rank_)
-      ownedElements_.push_back(e);
+    if (elementOwner_[e] == rank_) ownedElements_.push_back(e);
   numberDofs();
 }
 
@@ -108,7 +111,8 @@ void MixedElasticitySpace::numberDofs()
       const int* v = m.elementVertices(e);
       for (int a = 0; a < 4; ++a)
         for (int b = a + 1; b < 4; ++b) {
-          const long long key = static_cast<long long>(std::min(v[a], v[b])) * nv + std::max(v[a], v[b]);
+          const long long key =
+              static_cast<long long>(std::min(v[a], v[b])) * nv + std::max(v[a], v[b]);
           edgeIndex.emplace(key, static_cast<int>(edgeIndex.size()));
         }
     }
@@ -123,8 +127,7 @@ void MixedElasticitySpace::numberDofs()
   faceLocalRT_.assign(d + 1, {});
   for (int a = 0; a < nRT_; ++a) {
     const auto tag = rt.getDofTag(a);
-    if (tag(0) == d - 1)
-      faceLocalRT_[impl_->sideToMeshFace[tag(1)]].push_back(a);
+    if (tag(0) == d - 1) faceLocalRT_[impl_->sideToMeshFace[tag(1)]].push_back(a);
   }
 
   const int r = numRotationComponents();
@@ -136,9 +139,10 @@ void MixedElasticitySpace::numberDofs()
     const int* faces = m.elementFaces(e);
     for (int a = 0; a < nRT_; ++a) {
       const auto tag = rt.getDofTag(a);
-      rtLocal[a] = tag(0) == d - 1
-                       ? static_cast<long long>(faces[impl_->sideToMeshFace[tag(1)]]) * nFaceRT_ + tag(2)
-                       : static_cast<long long>(nf) * nFaceRT_ + static_cast<long long>(e) * nIntRT + tag(2);
+      rtLocal[a] =
+          tag(0) == d - 1
+              ? static_cast<long long>(faces[impl_->sideToMeshFace[tag(1)]]) * nFaceRT_ + tag(2)
+              : static_cast<long long>(nf) * nFaceRT_ + static_cast<long long>(e) * nIntRT + tag(2);
     }
     for (int a = 0; a < nCP_; ++a) {
       const auto tag = pk.getDofTag(a);
@@ -182,8 +186,7 @@ void MixedElasticitySpace::numberDofs()
   for (long long g = 0; g < numGlobalDofs(); ++g) {
     SC_THROW_IF(dofOwner_[g] == INT_MAX, core::InternalError,
                 "global DOF " << g << " belongs to no element (numbering bug)");
-    if (dofOwner_[g] == rank_)
-      ownedDofs_.push_back(g);
+    if (dofOwner_[g] == rank_) ownedDofs_.push_back(g);
   }
   for (int e : ownedElements_) {
     const long long* g = elementDofs(e);
@@ -196,5 +199,8 @@ void MixedElasticitySpace::numberDofs()
 }  // namespace sc::disc
 
 namespace sc::disc {
-bool MixedElasticitySpace::isCurved(int e) const { return !curved_.is_null() && curved_->isCurved(e); }
+bool MixedElasticitySpace::isCurved(int e) const
+{
+  return !curved_.is_null() && curved_->isCurved(e);
+}
 }  // namespace sc::disc

@@ -1,5 +1,6 @@
 #pragma once
-// The finite element spaces of the dual mixed method (docs/theory.md §"Mixed formulation") on a simplicial mesh:
+// The finite element spaces of the dual mixed method (docs/theory.md §"Mixed formulation") on a
+// simplicial mesh:
 //   σ: d rows, each in RT_k   (Intrepid2 Basis_HDIV_{TRI,TET}_In_FEM(k+1), Piola-mapped)
 //   u: d components in DP_k   (Basis_HGRAD_{TRI,TET}_Cn_FEM(k), element-local DOFs)
 //   θ: r components in CP_k   (same basis, continuous; r = 1 in 2D, 3 in 3D)
@@ -19,7 +20,7 @@
 namespace sc::mesh {
 class SimplexMesh;
 class CurvedElements;
-}
+}  // namespace sc::mesh
 
 namespace sc::disc {
 
@@ -71,7 +72,10 @@ public:
   long long rotationBegin() const { return numStressDofs() + numDisplacementDofs(); }
 
   /// Global ids of element e's DOFs, localSize() entries in the element-local layout.
-  const long long* elementDofs(int e) const { return &elementDofs_[static_cast<std::size_t>(e) * localSize()]; }
+  const long long* elementDofs(int e) const
+  {
+    return &elementDofs_[static_cast<std::size_t>(e) * localSize()];
+  }
   /// Rank owning a global DOF (the lowest owner among the elements that share it).
   int dofOwner(long long gid) const { return dofOwner_[static_cast<std::size_t>(gid)]; }
   /// This rank's DOFs (sorted) and the DOFs of its elements (sorted, unique).
@@ -82,7 +86,10 @@ public:
 
   /// Element-local indices (0..nRT-1, within one row block) of the RT DOFs on the element's
   /// face opposite local vertex `localFace` (mesh convention).
-  const std::vector<int>& stressFaceLocalDofs(int localFace) const { return faceLocalRT_[localFace]; }
+  const std::vector<int>& stressFaceLocalDofs(int localFace) const
+  {
+    return faceLocalRT_[localFace];
+  }
 
   /// Intrepid2 objects, for ElementValues / FaceValues (opaque outside the package).
   struct Impl;

@@ -36,7 +36,8 @@ ContactContribution::ContactContribution(const disc::MixedElasticitySpace& space
                                          const contact::ContactSettings& settings,
                                          const core::Material& material,
                                          std::vector<std::string> contactBoundaries)
-  : space_(space), settings_(settings), material_(material), boundaries_(std::move(contactBoundaries))
+    : space_(space), settings_(settings), material_(material),
+      boundaries_(std::move(contactBoundaries))
 {
 }
 
@@ -66,7 +67,8 @@ void ContactContribution::addTo(ErrorEstimate& est, assembly::ElementSolution& s
     bool gathered = false;
     for (int lf = 0; lf <= d; ++lf) {
       const int f = faces[lf];
-      if (!m.isBoundaryFace(f) || std::find(ids.begin(), ids.end(), m.faceBoundaryId(f)) == ids.end())
+      if (!m.isBoundaryFace(f) ||
+          std::find(ids.begin(), ids.end(), m.faceBoundaryId(f)) == ids.end())
         continue;
       if (!gathered) {
         sol.gather(e);
@@ -101,11 +103,10 @@ void ContactContribution::addTo(ErrorEstimate& est, assembly::ElementSolution& s
         compl_ += w * std::max(0.0, g - uN) * std::max(0.0, -sN);
         pen += w * std::max(0.0, uN - g) * std::abs(sN);
         tension += w * std::pow(std::max(0.0, sN), 2);
-        const double bound = coulomb ? settings_.frictionCoefficient * std::abs(sN)
+        const double bound = coulomb  ? settings_.frictionCoefficient * std::abs(sN)
                              : tresca ? settings_.trescaBound
                                       : 0.0;
-        if (settings_.needsFriction())
-          fric += w * (bound * std::sqrt(uT2) + sTuT);
+        if (settings_.needsFriction()) fric += w * (bound * std::sqrt(uT2) + sTuT);
         signedNormal += w * (uN - g) * sN;
       }
       tension *= hF / twoMu;

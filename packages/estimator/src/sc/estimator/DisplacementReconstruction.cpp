@@ -61,11 +61,12 @@ struct DisplacementReconstruction::Impl {
 DisplacementReconstruction::DisplacementReconstruction(const disc::MixedElasticitySpace& space,
                                                        int degree,
                                                        Teuchos::RCP<const Teuchos::Comm<int>> comm)
-  : space_(space), comm_(std::move(comm)), degree_(degree), impl_(std::make_unique<Impl>())
+    : space_(space), comm_(std::move(comm)), degree_(degree), impl_(std::make_unique<Impl>())
 {
   SC_THROW_IF(degree != space.degree() && degree != space.degree() + 1, core::InputError,
-              "reconstruction degree " << degree << " for k = " << space.degree()
-                                       << ": valid are k and k+1 ('Estimator/Reconstruction degree').");
+              "reconstruction degree "
+                  << degree << " for k = " << space.degree()
+                  << ": valid are k and k+1 ('Estimator/Reconstruction degree').");
   SC_THROW_IF(degree > kMaxDegree, core::InputError,
               "reconstruction degree " << degree << " > " << kMaxDegree << " is not supported.");
   const auto& m = space.mesh();
@@ -93,8 +94,8 @@ DisplacementReconstruction::DisplacementReconstruction(const disc::MixedElastici
   }
   I.cubatureDegree = 2 * std::max(p, space.degree()) + 4;
   {
-    auto cub = Intrepid2::DefaultCubatureFactory::create<Device>(space.impl().topology,
-                                                                 I.cubatureDegree);
+    auto cub =
+        Intrepid2::DefaultCubatureFactory::create<Device>(space.impl().topology, I.cubatureDegree);
     const int nq = cub->getNumPoints();
     I.cubPoints = View("points", nq, d);
     I.cubWeights = View("weights", nq);
@@ -123,12 +124,12 @@ DisplacementReconstruction::DisplacementReconstruction(const disc::MixedElastici
   }
   std::vector<std::size_t> order(keys.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
   I.elementNodes.assign(keys.size(), -1);
   long long id = -1;
   for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i == 0 || keys[order[i]] != keys[order[i - 1]])
-      ++id;
+    if (i == 0 || keys[order[i]] != keys[order[i - 1]]) ++id;
     I.elementNodes[order[i]] = id;
   }
   numNodes_ = id + 1;
@@ -145,25 +146,26 @@ DisplacementReconstruction::DisplacementReconstruction(const disc::MixedElastici
       const long long g = I.elementNodes[static_cast<std::size_t>(e) * I.n + a];
       nodeOwner[g] = std::min(nodeOwner[g], owner[e]);
       for (int j = 0; j <= d; ++j)
-        if (I.lattice[a][j] == p)
-          I.vertexNode[m.elementVertices(e)[j]] = g;
+        if (I.lattice[a][j] == p) I.vertexNode[m.elementVertices(e)[j]] = g;
     }
   std::vector<GO> ownedGids;
   for (long long g = 0; g < numNodes_; ++g)
-    if (nodeOwner[g] == rank)
-      ownedGids.push_back(g);
+    if (nodeOwner[g] == rank) ownedGids.push_back(g);
   for (int e : space.ownedElements())
     for (int a = 0; a < I.n; ++a)
       I.overlapNodes.push_back(I.elementNodes[static_cast<std::size_t>(e) * I.n + a]);
   std::sort(I.overlapNodes.begin(), I.overlapNodes.end());
-  I.overlapNodes.erase(std::unique(I.overlapNodes.begin(), I.overlapNodes.end()), I.overlapNodes.end());
+  I.overlapNodes.erase(std::unique(I.overlapNodes.begin(), I.overlapNodes.end()),
+                       I.overlapNodes.end());
   I.overlapIndex.assign(numNodes_, -1);
   for (std::size_t i = 0; i < I.overlapNodes.size(); ++i)
     I.overlapIndex[I.overlapNodes[i]] = static_cast<int>(i);
   std::vector<GO> overlapGids(I.overlapNodes.begin(), I.overlapNodes.end());
-  I.ownedMap = Teuchos::rcp(new Tpetra::Map<>(numNodes_, Teuchos::ArrayView<const GO>(ownedGids), 0, comm_));
-  I.overlapMap = Teuchos::rcp(new Tpetra::Map<>(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                                Teuchos::ArrayView<const GO>(overlapGids), 0, comm_));
+  I.ownedMap =
+      Teuchos::rcp(new Tpetra::Map<>(numNodes_, Teuchos::ArrayView<const GO>(ownedGids), 0, comm_));
+  I.overlapMap =
+      Teuchos::rcp(new Tpetra::Map<>(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                     Teuchos::ArrayView<const GO>(overlapGids), 0, comm_));
   I.exporter = Teuchos::rcp(new Tpetra::Export<>(I.overlapMap, I.ownedMap));
   I.importer = Teuchos::rcp(new Tpetra::Import<>(I.ownedMap, I.overlapMap));
 
@@ -309,7 +311,8 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
   std::map<int, std::vector<std::array<double, 4>>> frameNodes;  // node -> (n, g) per part
   for (int pass = 0; pass < 2; ++pass)
     for (int f : m.boundaryFaces()) {
-      const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
+      const core::BoundaryCondition* bc =
+          data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
       if (!bc || (pass == 0 ? bc->type != core::BoundaryType::Displacement : !bc->inNormalFrame()))
         continue;
       const int e = m.faceElements(f)[0];
@@ -318,14 +321,11 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
       while (faces[lf] != f)
         ++lf;
       for (int a = 0; a < n; ++a) {
-        if (I.lattice[a][lf] != 0)
-          continue;  // not on the face opposite local vertex lf
+        if (I.lattice[a][lf] != 0) continue;  // not on the face opposite local vertex lf
         const int l = I.overlapIndex[I.elementNodes[static_cast<std::size_t>(e) * n + a]];
-        if (l < 0)
-          continue;
+        if (l < 0) continue;
         if (pass == 1) {
-          if (dirichletNode[l])
-            continue;
+          if (dirichletNode[l]) continue;
           const double* normal = frameParts.at(bc->boundary).normal.data();
           double gn[3] = {0, 0, 0};  // g n
           bc->evaluate(&I.coords[3 * l], normal, d, data.exactSolution, gn);
@@ -336,8 +336,7 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
           bool seen = false;
           for (const auto& c : list)
             seen = seen || (c[0] == normal[0] && c[1] == normal[1] && c[2] == normal[2]);
-          if (!seen)
-            list.push_back({normal[0], normal[1], normal[2], g});
+          if (!seen) list.push_back({normal[0], normal[1], normal[2], g});
           continue;
         }
         dirichletNode[l] = 1;
@@ -362,8 +361,7 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
         target -= dot * b[3];
       }
       const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-      if (norm < 1e-8)
-        continue;
+      if (norm < 1e-8) continue;
       basis.push_back({q[0] / norm, q[1] / norm, q[2] / norm, target / norm});
     }
     for (const auto& b : basis) {
@@ -376,15 +374,15 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
   }
 }
 
-void DisplacementReconstruction::valuesAt(int e, const disc::ElementValues& ev, std::vector<double>& u,
-                                          std::vector<double>& grad) const
+void DisplacementReconstruction::valuesAt(int e, const disc::ElementValues& ev,
+                                          std::vector<double>& u, std::vector<double>& grad) const
 {
   auto& I = *impl_;  // the cached cubature map is filled on first use
   const int d = space_.dim(), n = I.n, nq = ev.numPoints();
-  SC_THROW_IF(nq != static_cast<int>(I.cubPoints.extent(0)), core::InternalError,
-              "DisplacementReconstruction::valuesAt needs ElementValues of degree cubatureDegree()");
-  if (!I.cubatureMap)
-    I.cubatureMap = std::make_unique<ElementMap>(space_, I.cubPoints);
+  SC_THROW_IF(
+      nq != static_cast<int>(I.cubPoints.extent(0)), core::InternalError,
+      "DisplacementReconstruction::valuesAt needs ElementValues of degree cubatureDegree()");
+  if (!I.cubatureMap) I.cubatureMap = std::make_unique<ElementMap>(space_, I.cubPoints);
   ElementMap& F = *I.cubatureMap;
   F.reinit(e);
   {
@@ -393,7 +391,8 @@ void DisplacementReconstruction::valuesAt(int e, const disc::ElementValues& ev, 
     for (int j = 0; j < d; ++j)
       dist += std::abs(F.x(0)[j] - ev.point(0)[j]);
     SC_THROW_IF(dist > 1e-10 * space_.mesh().elementDiameter(e), core::InternalError,
-                "DisplacementReconstruction::valuesAt: ElementValues not reinit'ed on element " << e);
+                "DisplacementReconstruction::valuesAt: ElementValues not reinit'ed on element "
+                    << e);
   }
   u.assign(static_cast<std::size_t>(nq) * d, 0.0);
   grad.assign(static_cast<std::size_t>(nq) * d * d, 0.0);
@@ -428,7 +427,8 @@ void DisplacementReconstruction::valueAt(int e, const double* x, double* u) cons
 {
   const auto& I = *impl_;
   const int d = space_.dim(), n = I.n;
-  const auto ref = ElementMap::toReference(space_, e, std::vector<double>{x[0], x[1], d == 3 ? x[2] : 0.0});
+  const auto ref =
+      ElementMap::toReference(space_, e, std::vector<double>{x[0], x[1], d == 3 ? x[2] : 0.0});
   View xh("xh", 1, d), vals("vals", n, 1);
   for (int j = 0; j < d; ++j)
     xh(0, j) = ref[j];
@@ -448,7 +448,8 @@ void DisplacementReconstruction::vertexValue(int v, double* u) const
   const int d = space_.dim();
   const long long g = I.vertexNode[v];
   const int l = g < 0 ? -1 : I.overlapIndex[g];
-  SC_THROW_IF(l < 0, core::InternalError, "u^R asked at vertex " << v << ", not of this rank's elements");
+  SC_THROW_IF(l < 0, core::InternalError,
+              "u^R asked at vertex " << v << ", not of this rank's elements");
   for (int i = 0; i < d; ++i)
     u[i] = I.values_[static_cast<std::size_t>(l) * d + i];
 }

@@ -20,11 +20,17 @@ struct ErrorEstimate {
   double total() const;
   /// η² of the part `name` (InternalError if absent).
   double squared(const std::string& name) const;
-  void addPart(const std::string& name, double squaredValue) { parts.emplace_back(name, squaredValue); }
+  void addPart(const std::string& name, double squaredValue)
+  {
+    parts.emplace_back(name, squaredValue);
+  }
   /// Signed quantities reported beside η but not part of it (the talk's signed normal contact
   /// part `contact_normal_signed`, in the units of η²).
   std::vector<std::pair<std::string, double>> diagnostics;
-  void addDiagnostic(const std::string& name, double value) { diagnostics.emplace_back(name, value); }
+  void addDiagnostic(const std::string& name, double value)
+  {
+    diagnostics.emplace_back(name, value);
+  }
 };
 
 }  // namespace sc::estimator

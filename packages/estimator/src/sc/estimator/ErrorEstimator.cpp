@@ -24,15 +24,14 @@ double ErrorEstimate::total() const
 double ErrorEstimate::squared(const std::string& name) const
 {
   for (const auto& p : parts)
-    if (p.first == name)
-      return p.second;
+    if (p.first == name) return p.second;
   throw core::InternalError("the estimate has no part '" + name + "'");
 }
 
 ErrorEstimator::ErrorEstimator(const assembly::MixedElasticityAssembler& assembler,
                                const EstimatorSettings& settings,
                                Teuchos::RCP<const Teuchos::Comm<int>> comm)
-  : assembler_(assembler), comm_(std::move(comm))
+    : assembler_(assembler), comm_(std::move(comm))
 {
   const auto& S = assembler.space();
   reconstruction_ = std::make_unique<DisplacementReconstruction>(
@@ -72,7 +71,8 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
   const auto& S = assembler_.space();
   const auto& m = S.mesh();
   const int d = S.dim();
-  const double twoMu = 2.0 * data.material.shearModulus(), cd = data.material.complianceCoefficient(d);
+  const double twoMu = 2.0 * data.material.shearModulus(),
+               cd = data.material.complianceCoefficient(d);
   const core::ExactSolution* exact = data.exactSolution;
 
   assembly::ElementSolution sol(assembler_, solution);
@@ -123,14 +123,15 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
     const int* faces = m.elementFaces(e);
     for (int lf = 0; lf <= d; ++lf) {
       const int f = faces[lf];
-      if (!m.isBoundaryFace(f))
-        continue;
-      const core::BoundaryCondition* bc = data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
+      if (!m.isBoundaryFace(f)) continue;
+      const core::BoundaryCondition* bc =
+          data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
       // Free faces: σ_h n = 0 exactly; contact faces: the contact contribution; Symmetry faces:
       // the tangential components are zero exactly and u^R·n = 0 at the face's nodes, hence on
       // the (flat) face: nothing to measure. Normal displacement faces: u^R·n = g at the nodes,
       // so only the interpolation error of g, measured like a displacement's.
-      if (!bc || bc->type == core::BoundaryType::Contact || bc->type == core::BoundaryType::Symmetry ||
+      if (!bc || bc->type == core::BoundaryType::Contact ||
+          bc->type == core::BoundaryType::Symmetry ||
           (bc->type == core::BoundaryType::NormalDisplacement && bc->isZero()))
         continue;
       if ((bc->type == core::BoundaryType::Traction || bc->type == core::BoundaryType::Pressure) &&

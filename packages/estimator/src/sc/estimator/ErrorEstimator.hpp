@@ -39,8 +39,8 @@ public:
 
 class ErrorEstimator {
 public:
-  ErrorEstimator(const assembly::MixedElasticityAssembler& assembler, const EstimatorSettings& settings,
-                 Teuchos::RCP<const Teuchos::Comm<int>> comm);
+  ErrorEstimator(const assembly::MixedElasticityAssembler& assembler,
+                 const EstimatorSettings& settings, Teuchos::RCP<const Teuchos::Comm<int>> comm);
   ~ErrorEstimator();
   ErrorEstimator(const ErrorEstimator&) = delete;
   ErrorEstimator& operator=(const ErrorEstimator&) = delete;
@@ -50,7 +50,8 @@ public:
   /// Reconstruct u^R from `solution` (owned map of the assembler) and estimate. `data` must be
   /// the data the system was assembled with. The same as reconstruct() then
   /// estimateReconstructed(), the two steps the application times separately.
-  ErrorEstimate estimate(const assembly::MultiVector& solution, const assembly::ElasticityData& data);
+  ErrorEstimate estimate(const assembly::MultiVector& solution,
+                         const assembly::ElasticityData& data);
 
   /// Step 1: u^R from `solution` (local Neumann problems, averaging at shared nodes; collective).
   void reconstruct(const assembly::MultiVector& solution, const assembly::ElasticityData& data);

@@ -25,29 +25,34 @@ using Handle = detail::Hdf5Handle;
 
 // Writing: a failure names the file, the object and, for the usual write failures, the system's
 // reason (errno may be stale otherwise).
-hid_t checkWrite(hid_t id, const std::string& what, const std::string& object, const std::string& file)
+hid_t checkWrite(hid_t id, const std::string& what, const std::string& object,
+                 const std::string& file)
 {
   if (id < 0) {
     const int err = errno;
-    const bool writeError = err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO || err == EROFS;
+    const bool writeError =
+        err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO || err == EROFS;
     SC_THROW_IF(true, sc::core::Error,
-                "HDF5 error: " << what << " failed for '" << object << "' in the checkpoint '" << file
-                               << "'" << (writeError ? std::string(": ") + std::strerror(err) : ""));
+                "HDF5 error: " << what << " failed for '" << object << "' in the checkpoint '"
+                               << file << "'"
+                               << (writeError ? std::string(": ") + std::strerror(err) : ""));
   }
   return id;
 }
 
-void writeDataset(hid_t file, const std::string& name, hid_t memType, hid_t fileType,
-                  std::size_t n, const void* data, const std::string& path)
+void writeDataset(hid_t file, const std::string& name, hid_t memType, hid_t fileType, std::size_t n,
+                  const void* data, const std::string& path)
 {
   const hsize_t dims[1] = {static_cast<hsize_t>(n)};
-  Handle space(checkWrite(H5Screate_simple(1, dims, nullptr), "H5Screate_simple", name, path), H5Sclose);
+  Handle space(checkWrite(H5Screate_simple(1, dims, nullptr), "H5Screate_simple", name, path),
+               H5Sclose);
   Handle set(checkWrite(H5Dcreate2(file, name.c_str(), fileType, space.get(), H5P_DEFAULT,
                                    H5P_DEFAULT, H5P_DEFAULT),
                         "H5Dcreate2", name, path),
              H5Dclose);
   if (n > 0)
-    checkWrite(H5Dwrite(set.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", name, path);
+    checkWrite(H5Dwrite(set.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", name,
+               path);
 }
 
 // FNV-1a, 64 bits: each step h = (h ^ byte) · prime is a bijection of h for a given byte, so two
@@ -57,7 +62,8 @@ public:
   void add(const void* data, std::size_t n)
   {
     const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h_ = (h_ ^ b[i]) * 0x100000001b3ULL;
+    for (std::size_t i = 0; i < n; ++i)
+      h_ = (h_ ^ b[i]) * 0x100000001b3ULL;
   }
   void add(const std::string& s)
   {
@@ -95,7 +101,8 @@ unsigned long long CheckpointFile::checksum() const
     h.add(&n, sizeof n);
     h.add(v.data(), v.size() * sizeof(double));
   }
-  for (const auto& [name, v] : strings_) h.add("s"), h.add(name), h.add(v);
+  for (const auto& [name, v] : strings_)
+    h.add("s"), h.add(name), h.add(v);
   return h.value();
 }
 
@@ -217,7 +224,8 @@ CheckpointFile CheckpointFile::read(const std::string& path)
               "the checkpoint '" << path << "' is a directory, not a file");
   ErrorPrintingOff quiet;
   auto bad = [&](const std::string& why) -> std::string {
-    return "the checkpoint '" + path + "' cannot be read: " + why + " (damaged or not a checkpoint)";
+    return "the checkpoint '" + path + "' cannot be read: " + why +
+           " (damaged or not a checkpoint)";
   };
   SC_THROW_IF(H5Fis_hdf5(path.c_str()) <= 0, sc::core::InputError, bad("not an HDF5 file"));
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);

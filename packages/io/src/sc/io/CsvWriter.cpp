@@ -5,7 +5,6 @@
 
 #include <sc/core/Error.hpp>
 
-
 #include <cstdio>
 #include <numeric>
 
@@ -33,12 +32,10 @@ std::string CsvWriter::formatValue(double value)
 
 std::string CsvWriter::formatValue(const std::string& value)
 {
-  if (value.find_first_of(",\"\r\n") == std::string::npos)
-    return value;
+  if (value.find_first_of(",\"\r\n") == std::string::npos) return value;
   std::string out = "\"";
   for (char c : value) {
-    if (c == '"')
-      out += '"';
+    if (c == '"') out += '"';
     out += c;
   }
   return out + "\"";
@@ -49,8 +46,7 @@ std::string CsvWriter::formatRows() const
   std::string out;
   for (const Row& row : rows_) {
     for (std::size_t i = 0; i < row.size(); ++i) {
-      if (i > 0)
-        out += ',';
+      if (i > 0) out += ',';
       out += std::visit([](const auto& v) { return formatValue(v); }, row[i]);
     }
     out += '\n';
@@ -62,8 +58,7 @@ std::string CsvWriter::format() const
 {
   std::string out;
   for (std::size_t i = 0; i < header_.size(); ++i) {
-    if (i > 0)
-      out += ',';
+    if (i > 0) out += ',';
     out += formatValue(header_[i]);
   }
   return out + '\n' + formatRows();

@@ -4,7 +4,8 @@
 //   Scalar           1 value
 //   Vector           d values (x, y[, z])
 //   Tensor           d*d values, row-major (xx, xy, yx, yy) or (xx, xy, xz, yx, ..., zz)
-//   SymmetricTensor  2D: 3 values (xx, yy, xy); 3D: 6 values in Voigt order (xx, yy, zz, yz, xz, xy)
+//   SymmetricTensor  2D: 3 values (xx, yy, xy); 3D: 6 values in Voigt order (xx, yy, zz, yz, xz,
+//   xy)
 // The writer stores vectors with 3 and tensors with 9 components (zero-padded in 2D, symmetric
 // ones expanded), the layouts ParaView's XDMF reader understands unambiguously.
 

@@ -10,10 +10,10 @@ namespace sc::io {
 int verticesPerCell(CellType type)
 {
   switch (type) {
-    case CellType::Line: return 2;
-    case CellType::Triangle: return 3;
-    case CellType::Tetrahedron: return 4;
-    case CellType::Vertex: return 1;
+  case CellType::Line: return 2;
+  case CellType::Triangle: return 3;
+  case CellType::Tetrahedron: return 4;
+  case CellType::Vertex: return 1;
   }
   throw sc::core::InternalError("verticesPerCell: unknown CellType");
 }
@@ -21,10 +21,10 @@ int verticesPerCell(CellType type)
 std::string xdmfTopologyName(CellType type)
 {
   switch (type) {
-    case CellType::Line: return "Polyline";
-    case CellType::Triangle: return "Triangle";
-    case CellType::Tetrahedron: return "Tetrahedron";
-    case CellType::Vertex: return "Polyvertex";
+  case CellType::Line: return "Polyline";
+  case CellType::Triangle: return "Triangle";
+  case CellType::Tetrahedron: return "Tetrahedron";
+  case CellType::Vertex: return "Polyvertex";
   }
   throw sc::core::InternalError("xdmfTopologyName: unknown CellType");
 }
@@ -32,10 +32,10 @@ std::string xdmfTopologyName(CellType type)
 std::string cellTypeName(CellType type)
 {
   switch (type) {
-    case CellType::Line: return "line";
-    case CellType::Triangle: return "triangle";
-    case CellType::Tetrahedron: return "tetrahedron";
-    case CellType::Vertex: return "vertex";
+  case CellType::Line: return "line";
+  case CellType::Triangle: return "triangle";
+  case CellType::Tetrahedron: return "tetrahedron";
+  case CellType::Vertex: return "vertex";
   }
   throw sc::core::InternalError("cellTypeName: unknown CellType");
 }
@@ -43,10 +43,10 @@ std::string cellTypeName(CellType type)
 int inputComponents(FieldKind kind, int dim)
 {
   switch (kind) {
-    case FieldKind::Scalar: return 1;
-    case FieldKind::Vector: return dim;
-    case FieldKind::Tensor: return dim * dim;
-    case FieldKind::SymmetricTensor: return dim == 2 ? 3 : 6;
+  case FieldKind::Scalar: return 1;
+  case FieldKind::Vector: return dim;
+  case FieldKind::Tensor: return dim * dim;
+  case FieldKind::SymmetricTensor: return dim == 2 ? 3 : 6;
   }
   throw sc::core::InternalError("inputComponents: unknown FieldKind");
 }
@@ -54,10 +54,10 @@ int inputComponents(FieldKind kind, int dim)
 int storedComponents(FieldKind kind)
 {
   switch (kind) {
-    case FieldKind::Scalar: return 1;
-    case FieldKind::Vector: return 3;
-    case FieldKind::Tensor:
-    case FieldKind::SymmetricTensor: return 9;
+  case FieldKind::Scalar: return 1;
+  case FieldKind::Vector: return 3;
+  case FieldKind::Tensor:
+  case FieldKind::SymmetricTensor: return 9;
   }
   throw sc::core::InternalError("storedComponents: unknown FieldKind");
 }
@@ -65,10 +65,10 @@ int storedComponents(FieldKind kind)
 std::string xdmfAttributeType(FieldKind kind)
 {
   switch (kind) {
-    case FieldKind::Scalar: return "Scalar";
-    case FieldKind::Vector: return "Vector";
-    case FieldKind::Tensor:
-    case FieldKind::SymmetricTensor: return "Tensor";
+  case FieldKind::Scalar: return "Scalar";
+  case FieldKind::Vector: return "Vector";
+  case FieldKind::Tensor:
+  case FieldKind::SymmetricTensor: return "Tensor";
   }
   throw sc::core::InternalError("xdmfAttributeType: unknown FieldKind");
 }
@@ -76,10 +76,10 @@ std::string xdmfAttributeType(FieldKind kind)
 std::string fieldKindName(FieldKind kind)
 {
   switch (kind) {
-    case FieldKind::Scalar: return "scalar";
-    case FieldKind::Vector: return "vector";
-    case FieldKind::Tensor: return "tensor";
-    case FieldKind::SymmetricTensor: return "symmetric tensor";
+  case FieldKind::Scalar: return "scalar";
+  case FieldKind::Vector: return "vector";
+  case FieldKind::Tensor: return "tensor";
+  case FieldKind::SymmetricTensor: return "symmetric tensor";
   }
   throw sc::core::InternalError("fieldKindName: unknown FieldKind");
 }

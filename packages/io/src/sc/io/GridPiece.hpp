@@ -54,7 +54,9 @@ struct GridPiece {
 
   GridPiece() = default;
   GridPiece(std::string name, CellType cellType, int spaceDim)
-      : name(std::move(name)), cellType(cellType), spaceDim(spaceDim) {}
+      : name(std::move(name)), cellType(cellType), spaceDim(spaceDim)
+  {
+  }
 
   void addPointField(std::string fieldName, FieldKind kind, std::vector<double> values)
   {
@@ -78,7 +80,10 @@ struct GridPiece {
   void setBoundaryNames(const std::map<int, std::string>& names);
 
   /// Owned vertices of this piece (0 if geometryFrom is set).
-  std::size_t localVertexCount() const { return coordinates.size() / static_cast<std::size_t>(spaceDim); }
+  std::size_t localVertexCount() const
+  {
+    return coordinates.size() / static_cast<std::size_t>(spaceDim);
+  }
   /// Owned cells (the owned vertices for CellType::Vertex).
   std::size_t localCellCount() const
   {

@@ -16,9 +16,10 @@ namespace {
 // Entries of a record's "eta" that are not parts of η (docs/output.md "summary.json").
 const std::set<std::string>& notParts()
 {
-  static const std::set<std::string> keys{"total",          "contact_normal_signed", "stress_energy_norm",
-                                          "relative",       "stress_energy_error",   "efficiency_index",
-                                          "marked_elements"};
+  static const std::set<std::string> keys{
+      "total",          "contact_normal_signed", "stress_energy_norm",
+      "relative",       "stress_energy_error",   "efficiency_index",
+      "marked_elements"};
   return keys;
 }
 
@@ -26,8 +27,7 @@ std::vector<std::string> etaParts(const nlohmann::ordered_json& cycles)
 {
   std::vector<std::string> parts;
   for (const auto& c : cycles) {
-    if (!c.contains("eta") || !c["eta"].is_object())
-      continue;
+    if (!c.contains("eta") || !c["eta"].is_object()) continue;
     for (const auto& [key, value] : c["eta"].items())
       if (!notParts().count(key) && value.is_number() &&
           std::find(parts.begin(), parts.end(), key) == parts.end())
@@ -37,19 +37,17 @@ std::vector<std::string> etaParts(const nlohmann::ordered_json& cycles)
 }
 
 // The value at a path of keys (and array indices), or null.
-const nlohmann::ordered_json& at(const nlohmann::ordered_json& record, std::initializer_list<const char*> keys,
-                                 int index = -1)
+const nlohmann::ordered_json& at(const nlohmann::ordered_json& record,
+                                 std::initializer_list<const char*> keys, int index = -1)
 {
   static const nlohmann::ordered_json null;
   const nlohmann::ordered_json* node = &record;
   for (const char* k : keys) {
-    if (!node->is_object() || !node->contains(k))
-      return null;
+    if (!node->is_object() || !node->contains(k)) return null;
     node = &(*node)[k];
   }
   if (index >= 0) {
-    if (!node->is_array() || node->size() <= static_cast<std::size_t>(index))
-      return null;
+    if (!node->is_array() || node->size() <= static_cast<std::size_t>(index)) return null;
     node = &(*node)[static_cast<std::size_t>(index)];
   }
   return *node;
@@ -57,8 +55,7 @@ const nlohmann::ordered_json& at(const nlohmann::ordered_json& record, std::init
 
 CsvWriter::Value cell(const nlohmann::ordered_json& v)
 {
-  if (v.is_number())
-    return v.get<double>();
+  if (v.is_number()) return v.get<double>();
   return std::string();
 }
 
@@ -69,8 +66,7 @@ namespace {
 bool hasLoadSteps(const nlohmann::ordered_json& cycles)
 {
   for (const auto& c : cycles)
-    if (c.contains("load_step"))
-      return true;
+    if (c.contains("load_step")) return true;
   return false;
 }
 
@@ -82,11 +78,9 @@ std::vector<std::string> namesUnder(const nlohmann::ordered_json& cycles,
   std::vector<std::string> names;
   for (const auto& c : cycles) {
     const auto& node = at(c, keys);
-    if (!node.is_object())
-      continue;
+    if (!node.is_object()) continue;
     for (const auto& [name, value] : node.items())
-      if (std::find(names.begin(), names.end(), name) == names.end())
-        names.push_back(name);
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }
   return names;
 }
@@ -99,7 +93,8 @@ std::vector<std::string> historyColumns(const nlohmann::ordered_json& cycles, in
   if (hasLoadSteps(cycles)) {
     columns.insert(columns.end(), {"step", "time"});
     for (const auto& part : namesUnder(cycles, {"load_step", "prescribed"}))
-      for (std::size_t i = 0; i < at(cycles.back(), {"load_step", "prescribed", part.c_str()}).size(); ++i)
+      for (std::size_t i = 0;
+           i < at(cycles.back(), {"load_step", "prescribed", part.c_str()}).size(); ++i)
         columns.push_back("prescribed_" + part + "_" + std::to_string(i));
   }
   columns.insert(columns.end(), {"elements", "dofs", "eta", "eta_relative"});
@@ -109,8 +104,8 @@ std::vector<std::string> historyColumns(const nlohmann::ordered_json& cycles, in
     for (int i = 0; i < dim; ++i)
       columns.push_back(std::string("force_") + "xyz"[i]);
     const std::string zone = dim == 2 ? "half_width" : "radius";
-    columns.insert(columns.end(),
-                   {zone, "max_pressure", "stick_" + zone, "area", "stick_area", "newton_iterations"});
+    columns.insert(columns.end(), {zone, "max_pressure", "stick_" + zone, "area", "stick_area",
+                                   "newton_iterations"});
   }
   for (const auto& part : namesUnder(cycles, {"reactions"}))
     for (int i = 0; i < dim; ++i)
@@ -134,7 +129,8 @@ std::string formatHistory(const nlohmann::ordered_json& cycles, int dim, bool co
       row[i++] = cell(at(c, {"load_step", "step"}));
       row[i++] = cell(at(c, {"load_step", "time"}));
       for (const auto& part : namesUnder(cycles, {"load_step", "prescribed"}))
-        for (std::size_t k = 0; k < at(cycles.back(), {"load_step", "prescribed", part.c_str()}).size(); ++k)
+        for (std::size_t k = 0;
+             k < at(cycles.back(), {"load_step", "prescribed", part.c_str()}).size(); ++k)
           row[i++] = cell(at(c, {"load_step", "prescribed", part.c_str()}, static_cast<int>(k)));
     }
     row[i++] = cell(at(c, {"elements"}));
@@ -164,8 +160,7 @@ std::string formatHistory(const nlohmann::ordered_json& cycles, int dim, bool co
     if (timings.is_object() && !timings.empty()) {
       double seconds = 0.0;
       for (const auto& [phase, value] : timings.items())
-        if (phase != "checkpoint" && value.is_number())
-          seconds += value.get<double>();
+        if (phase != "checkpoint" && value.is_number()) seconds += value.get<double>();
       row[i++] = seconds;
     } else {
       row[i++] = std::string();

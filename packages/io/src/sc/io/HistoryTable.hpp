@@ -20,7 +20,8 @@ namespace sc::io {
 std::string formatHistory(const nlohmann::ordered_json& cycles, int dim, bool contact);
 
 /// The column names of formatHistory.
-std::vector<std::string> historyColumns(const nlohmann::ordered_json& cycles, int dim, bool contact);
+std::vector<std::string> historyColumns(const nlohmann::ordered_json& cycles, int dim,
+                                        bool contact);
 
 /// Collective: rank 0 writes <directory>/history.csv atomically; a failure throws on every rank.
 void writeHistory(const Teuchos::Comm<int>& comm, const std::string& directory,

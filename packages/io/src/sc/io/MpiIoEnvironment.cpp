@@ -9,8 +9,7 @@ namespace sc::io {
 bool leaveOutOverflowingMpiIoComponents()
 {
 #ifdef OPEN_MPI
-  if (std::getenv("OMPI_MCA_sharedfp") != nullptr)
-    return false;
+  if (std::getenv("OMPI_MCA_sharedfp") != nullptr) return false;
   return ::setenv("OMPI_MCA_sharedfp", "^lockedfile", /*overwrite=*/0) == 0;
 #else
   return false;  // MPICH and others have no such component

@@ -50,10 +50,11 @@ void createOutputDirectory(const std::string& directory)
   std::error_code ec;
   fs::create_directories(directory, ec);
   SC_THROW_IF(ec, sc::core::InputError,
-              "Cannot create output directory '" << directory << "' (Output/Directory): "
-                                                 << ec.message());
+              "Cannot create output directory '" << directory
+                                                 << "' (Output/Directory): " << ec.message());
   SC_THROW_IF(!fs::is_directory(directory, ec), sc::core::InputError,
-              "Output directory '" << directory << "' (Output/Directory) exists but is not a directory");
+              "Output directory '" << directory
+                                   << "' (Output/Directory) exists but is not a directory");
   const std::string why = probeWritable(directory);
   SC_THROW_IF(!why.empty(), sc::core::InputError,
               "Output directory '" << directory << "' (Output/Directory) is not writable: " << why);
@@ -76,8 +77,7 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
           j["parameters"]["Output"].contains("Base name") &&
           j["parameters"]["Output"]["Base name"].is_string()) {
         const std::string earlier = j["parameters"]["Output"]["Base name"];
-        if (!earlier.empty() && earlier.find('/') == std::string::npos)
-          bases.push_back(earlier);
+        if (!earlier.empty() && earlier.find('/') == std::string::npos) bases.push_back(earlier);
       }
     }
   }
@@ -85,15 +85,15 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
     static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
     return std::regex_replace(text, special, R"(\$&)");
   };
-  std::string alternatives = "summary\\.json|checkpoint\\.h5|history\\.csv|contact_cycle[0-9]+\\.csv";
+  std::string alternatives =
+      "summary\\.json|checkpoint\\.h5|history\\.csv|contact_cycle[0-9]+\\.csv";
   for (const auto& b : bases)
     alternatives += "|" + quote(b) + "\\.xdmf|" + quote(b) + "_c[0-9]+\\.h5";
   const std::regex ours("(" + alternatives + ")(\\.tmp\\.[0-9]+)?");
 
   std::vector<std::string> removed;
   std::error_code ec;
-  if (!fs::is_directory(directory, ec))
-    return removed;
+  if (!fs::is_directory(directory, ec)) return removed;
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(directory, ec)) {
     std::error_code tec;
@@ -101,8 +101,8 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
       stale.push_back(entry.path());
   }
   SC_THROW_IF(ec, sc::core::InputError,
-              "Cannot list the output directory '" << directory << "' (Output/Directory): "
-                                                   << ec.message());
+              "Cannot list the output directory '" << directory
+                                                   << "' (Output/Directory): " << ec.message());
   for (const auto& path : stale) {
     fs::remove(path, ec);
     SC_THROW_IF(ec, sc::core::InputError,
@@ -124,8 +124,7 @@ std::vector<std::string> removeEarlierRunFiles(const std::string& directory,
   // Every rank learns how many (the names matter only to rank 0's progress line).
   int count = static_cast<int>(removed.size());
   core::broadcast(comm, 0, count);
-  if (comm.getRank() != 0)
-    removed.assign(static_cast<std::size_t>(count), std::string());
+  if (comm.getRank() != 0) removed.assign(static_cast<std::size_t>(count), std::string());
   return removed;
 }
 
@@ -147,8 +146,7 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(directory, ec)) {
     std::error_code tec;
-    if (entry.is_directory(tec))
-      continue;
+    if (entry.is_directory(tec)) continue;
     const std::string name = entry.path().filename().string();
     std::smatch m;
     if (std::regex_match(name, m, fields) || std::regex_match(name, m, csv)) {
@@ -159,7 +157,8 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
     }
   }
   SC_THROW_IF(ec, sc::core::InputError,
-              "Cannot list the output directory '" << directory << "' (--restart): " << ec.message());
+              "Cannot list the output directory '" << directory
+                                                   << "' (--restart): " << ec.message());
   for (const auto& path : stale) {
     fs::remove(path, ec);
     SC_THROW_IF(ec, sc::core::InputError,
@@ -179,15 +178,16 @@ std::vector<std::string> removeFilesAfterCycle(const std::string& directory,
   core::runOnRoot(comm, [&] { removed = removeFilesAfterCycle(directory, baseName, lastCycle); });
   int count = static_cast<int>(removed.size());
   core::broadcast(comm, 0, count);
-  if (comm.getRank() != 0)
-    removed.assign(static_cast<std::size_t>(count), std::string());
+  if (comm.getRank() != 0) removed.assign(static_cast<std::size_t>(count), std::string());
   return removed;
 }
 
 void checkRoomForFile(const std::string& directory, const std::string& path,
                       unsigned long long bytes)
 {
-  auto mb = [](unsigned long long b) { return std::to_string((b + (1ull << 20) - 1) >> 20) + " MiB"; };
+  auto mb = [](unsigned long long b) {
+    return std::to_string((b + (1ull << 20) - 1) >> 20) + " MiB";
+  };
   struct statvfs fs {};
   // File systems that report no size (f_blocks = 0: some network and virtual ones) are trusted.
   if (::statvfs(directory.c_str(), &fs) == 0 && fs.f_blocks > 0) {
@@ -210,16 +210,14 @@ void checkRunFileNamesAreFree(const std::string& directory, const std::string& b
 {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::is_directory(directory, ec))
-    return;
+  if (!fs::is_directory(directory, ec)) return;
   static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
   const std::string base = std::regex_replace(baseName, special, R"(\$&)");
   const std::regex ours("summary\\.json|checkpoint\\.h5|history\\.csv|contact_cycle[0-9]+\\.csv|" +
                         base + "\\.xdmf|" + base + "_c[0-9]+\\.h5");
   std::vector<fs::path> found;
   for (const auto& entry : fs::directory_iterator(directory, ec)) {
-    if (!std::regex_match(entry.path().filename().string(), ours))
-      continue;
+    if (!std::regex_match(entry.path().filename().string(), ours)) continue;
     // A symbolic link is replaced by the rename like a file; what it points to does not matter.
     std::error_code sec;
     const fs::file_type type = entry.symlink_status(sec).type();
@@ -227,10 +225,9 @@ void checkRunFileNamesAreFree(const std::string& directory, const std::string& b
       found.push_back(entry.path());
   }
   SC_THROW_IF(ec, sc::core::InputError,
-              "Cannot list the output directory '" << directory << "' (Output/Directory): "
-                                                   << ec.message());
-  if (found.empty())
-    return;
+              "Cannot list the output directory '" << directory
+                                                   << "' (Output/Directory): " << ec.message());
+  if (found.empty()) return;
   std::sort(found.begin(), found.end());
   const fs::path& path = found.front();
   const bool isDirectory = fs::is_directory(fs::symlink_status(path, ec));
@@ -240,9 +237,9 @@ void checkRunFileNamesAreFree(const std::string& directory, const std::string& b
                   << ", but a run writes its file " << path.filename().string()
                   << " there (docs/output.md): rename or remove it, or choose another output "
                   << "directory (--output, Output/Directory)"
-                  << (found.size() > 1 ? " (" + std::to_string(found.size() - 1) +
-                                             " more such name(s) there)"
-                                       : std::string())
+                  << (found.size() > 1
+                          ? " (" + std::to_string(found.size() - 1) + " more such name(s) there)"
+                          : std::string())
                   << ".");
 }
 
@@ -262,21 +259,18 @@ void checkRunFileNameLengths(const std::string& directory, const std::string& ba
   // is at most 100).
   const std::string suffix = "_c0000.h5.tmp.4194304";
   const std::string longestName =
-      std::max(baseName + suffix, std::string(kLongestFixedName), [](const auto& a, const auto& b) {
-        return a.size() < b.size();
-      });
+      std::max(baseName + suffix, std::string(kLongestFixedName),
+               [](const auto& a, const auto& b) { return a.size() < b.size(); });
   std::error_code ec;
   fs::path existing = directory;
-  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing.parent_path() != existing)
+  while (!fs::exists(existing, ec) && existing.has_parent_path() &&
+         existing.parent_path() != existing)
     existing = existing.parent_path();
-  if (!fs::exists(existing, ec))
-    existing = ".";
+  if (!fs::exists(existing, ec)) existing = ".";
   long nameMax = ::pathconf(existing.c_str(), _PC_NAME_MAX);
   long pathMax = ::pathconf(existing.c_str(), _PC_PATH_MAX);
-  if (nameMax <= 0)
-    nameMax = NAME_MAX;
-  if (pathMax <= 0)
-    pathMax = PATH_MAX;
+  if (nameMax <= 0) nameMax = NAME_MAX;
+  if (pathMax <= 0) pathMax = PATH_MAX;
   const long nameLength = static_cast<long>(longestName.size());
   SC_THROW_IF(nameLength > nameMax, sc::core::InputError,
               "Output/Base name is " << baseName.size() << " characters long: the run's field "
@@ -290,7 +284,8 @@ void checkRunFileNameLengths(const std::string& directory, const std::string& ba
   const std::string longestPath = (fs::path(directory) / longestName).string();
   const long pathLength = static_cast<long>(longestPath.size());
   SC_THROW_IF(pathLength >= pathMax, sc::core::InputError,
-              "the output directory (Output/Directory, " << directory.size() << " characters) is "
+              "the output directory (Output/Directory, "
+                  << directory.size() << " characters) is "
                   << "too long: with the run's longest file name, " << longestName
                   << ", the path would have " << pathLength << " characters, above the limit of "
                   << pathMax - 1 << " per path (PATH_MAX). Choose a shorter directory or Base "
@@ -304,22 +299,23 @@ void checkOutputDirectory(const std::string& directory)
               "Output/Directory is empty; give a directory name such as \"output\"");
   std::error_code ec;
   fs::path p = fs::absolute(directory, ec);
-  if (ec)
-    p = directory;
+  if (ec) p = directory;
   // The directory itself if it exists, else the nearest existing ancestor (where it would be
   // created).
   while (!fs::exists(p, ec) && p.has_parent_path() && p.parent_path() != p)
     p = p.parent_path();
   const bool self = fs::equivalent(p, fs::absolute(directory, ec), ec);
   SC_THROW_IF(!fs::is_directory(p, ec), sc::core::InputError,
-              (self ? "Output directory '" + directory + "' (Output/Directory) exists but is not a directory"
+              (self ? "Output directory '" + directory +
+                          "' (Output/Directory) exists but is not a directory"
                     : "Cannot create output directory '" + directory + "' (Output/Directory): '" +
                           p.string() + "' is not a directory"));
   const std::string why = probeWritable(p);
-  SC_THROW_IF(!why.empty(), sc::core::InputError,
-              (self ? "Output directory '" + directory + "' (Output/Directory) is not writable: " + why
-                    : "Cannot create output directory '" + directory + "' (Output/Directory): '" +
-                          p.string() + "' is not writable: " + why));
+  SC_THROW_IF(
+      !why.empty(), sc::core::InputError,
+      (self ? "Output directory '" + directory + "' (Output/Directory) is not writable: " + why
+            : "Cannot create output directory '" + directory + "' (Output/Directory): '" +
+                  p.string() + "' is not writable: " + why));
 }
 
 void checkOutputDirectory(const std::string& directory, const Teuchos::Comm<int>& comm)

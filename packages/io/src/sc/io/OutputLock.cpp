@@ -32,8 +32,7 @@ struct Owner {
 std::string hostName()
 {
   char buffer[256] = {};
-  if (::gethostname(buffer, sizeof buffer - 1) != 0 || buffer[0] == '\0')
-    return "unknown";
+  if (::gethostname(buffer, sizeof buffer - 1) != 0 || buffer[0] == '\0') return "unknown";
   return buffer;
 }
 
@@ -43,16 +42,13 @@ bool processStat(long pid, char& state, long long& start)
 {
   std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
   std::string line;
-  if (!in || !std::getline(in, line))
-    return false;
+  if (!in || !std::getline(in, line)) return false;
   const auto close = line.rfind(')');  // the command name may hold blanks and parentheses
-  if (close == std::string::npos)
-    return false;
+  if (close == std::string::npos) return false;
   std::istringstream fields(line.substr(close + 1));
   std::string field;
   for (int i = 3; i <= 22 && fields >> field; ++i) {
-    if (i == 3)
-      state = field[0];
+    if (i == 3) state = field[0];
     if (i == 22) {
       start = std::atoll(field.c_str());
       return true;
@@ -73,8 +69,8 @@ Owner thisProcess()
 
 std::string lockText(const Owner& o)
 {
-  return "pid " + std::to_string(o.pid) + "\nhost " + o.host + "\nstart " + std::to_string(o.start) +
-         "\n";
+  return "pid " + std::to_string(o.pid) + "\nhost " + o.host + "\nstart " +
+         std::to_string(o.start) + "\n";
 }
 
 bool parseLock(const std::string& text, Owner& o)
@@ -99,15 +95,12 @@ enum class Status { Alive, Dead, OtherHost };
 
 Status ownerStatus(const Owner& o)
 {
-  if (o.host != hostName())
-    return Status::OtherHost;
-  if (::kill(static_cast<pid_t>(o.pid), 0) != 0 && errno == ESRCH)
-    return Status::Dead;
+  if (o.host != hostName()) return Status::OtherHost;
+  if (::kill(static_cast<pid_t>(o.pid), 0) != 0 && errno == ESRCH) return Status::Dead;
   char state = 0;
   long long start = -1;
   if (processStat(o.pid, state, start)) {
-    if (state == 'Z' || state == 'X')
-      return Status::Dead;  // exited, not yet reaped by its parent
+    if (state == 'Z' || state == 'X') return Status::Dead;  // exited, not yet reaped by its parent
     if (o.start >= 0 && start != o.start)
       return Status::Dead;  // the pid now belongs to another process
   }
@@ -123,8 +116,7 @@ Read readLock(const std::string& path, std::string& text, Owner& owner, std::str
   for (int attempt = 0;; ++attempt) {
     struct stat st {};
     if (::lstat(path.c_str(), &st) != 0) {
-      if (errno == ENOENT || errno == ENOTDIR)
-        return Read::Missing;
+      if (errno == ENOENT || errno == ENOTDIR) return Read::Missing;
       why = std::strerror(errno);
       return Read::NotALock;
     }
@@ -134,8 +126,7 @@ Read readLock(const std::string& path, std::string& text, Owner& owner, std::str
     }
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-      if (errno == ENOENT)
-        return Read::Missing;
+      if (errno == ENOENT) return Read::Missing;
       why = std::strerror(errno);
       return Read::NotALock;
     }
@@ -145,8 +136,7 @@ Read readLock(const std::string& path, std::string& text, Owner& owner, std::str
       text.append(buffer, static_cast<std::size_t>(n));
     ::close(fd);
     owner = Owner{};
-    if (parseLock(text, owner))
-      return Read::Lock;
+    if (parseLock(text, owner)) return Read::Lock;
     if (attempt == 20) {
       why = text.empty() ? "it is empty" : "it names no process id and host";
       return Read::NotALock;
@@ -192,7 +182,8 @@ std::string acquire(const std::string& directory, const std::string& path)
     const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd >= 0) {
       const std::string text = lockText(me);
-      const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+      const bool written =
+          ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
       const int err = errno;
       const bool closed = ::close(fd) == 0;
       if (!written || !closed) {
@@ -210,21 +201,21 @@ std::string acquire(const std::string& directory, const std::string& path)
     std::string text, why;
     Owner owner;
     const Read read = readLock(path, text, owner, why);
-    if (read == Read::Missing)
-      continue;  // its run removed it an instant ago
+    if (read == Read::Missing) continue;  // its run removed it an instant ago
     SC_THROW_IF(read == Read::NotALock, sc::core::InputError, notALock(directory, path, why));
     const Status status = ownerStatus(owner);
-    SC_THROW_IF(status != Status::Dead, sc::core::InputError, inUse(directory, path, owner, status));
+    SC_THROW_IF(status != Status::Dead, sc::core::InputError,
+                inUse(directory, path, owner, status));
     // Stale. Move it aside first and look at what was moved: if another run took the stale lock
     // over in between, the file moved is that run's live lock, and goes back.
     const std::string aside = path + ".stale." + std::to_string(me.pid);
     if (::rename(path.c_str(), aside.c_str()) != 0) {
       const int renameErr = errno;
-      if (renameErr == ENOENT)
-        continue;
+      if (renameErr == ENOENT) continue;
       SC_THROW_IF(true, sc::core::InputError,
-                  "Cannot remove the stale lock '" << path << "' (its process " << owner.pid
-                                                   << " no longer runs): " << std::strerror(renameErr));
+                  "Cannot remove the stale lock '"
+                      << path << "' (its process " << owner.pid
+                      << " no longer runs): " << std::strerror(renameErr));
     }
     std::string movedText, movedWhy;
     Owner moved;
@@ -234,9 +225,8 @@ std::string acquire(const std::string& directory, const std::string& path)
     }
     ::unlink(aside.c_str());
     std::ostringstream os;
-    os << "took over the stale lock '" << path << "' of process " << owner.pid
-       << " on this host (" << owner.host
-       << "), which no longer runs (a run there was killed or crashed)";
+    os << "took over the stale lock '" << path << "' of process " << owner.pid << " on this host ("
+       << owner.host << "), which no longer runs (a run there was killed or crashed)";
     takenOver = os.str();
   }
   SC_THROW_IF(true, sc::core::InputError,
@@ -259,14 +249,14 @@ OutputLock::OutputLock(const Teuchos::Comm<int>& comm, std::string directory)
 
 OutputLock::~OutputLock()
 {
-  if (!held_)
-    return;
+  if (!held_) return;
   try {
     // Only if it is still ours: never remove the lock of a run that took over by mistake.
     std::string text, why;
     Owner owner;
     const Owner me = thisProcess();
-    if (readLock(path_, text, owner, why) == Read::Lock && owner.pid == me.pid && owner.host == me.host)
+    if (readLock(path_, text, owner, why) == Read::Lock && owner.pid == me.pid &&
+        owner.host == me.host)
       ::unlink(path_.c_str());
   } catch (...) {
     // A destructor must not throw; a lock left behind is recognised as stale by the next run.
@@ -279,8 +269,7 @@ void checkOutputLock(const std::string& directory)
   std::string text, why;
   Owner owner;
   const Read read = readLock(path, text, owner, why);
-  if (read == Read::Missing)
-    return;
+  if (read == Read::Missing) return;
   SC_THROW_IF(read == Read::NotALock, sc::core::InputError, notALock(directory, path, why));
   const Status status = ownerStatus(owner);
   SC_THROW_IF(status != Status::Dead, sc::core::InputError, inUse(directory, path, owner, status));

@@ -12,9 +12,10 @@ Teuchos::RCP<const Teuchos::ParameterList> OutputSettings::getValidParameters()
 {
   static Teuchos::RCP<const Teuchos::ParameterList> valid = [] {
     auto pl = Teuchos::rcp(new Teuchos::ParameterList(sublistName));
-    pl->set<std::string>("Directory", "output",
-                         "Directory for all output files (summary.json, XDMF/HDF5, CSV); created "
-                         "with its parents if missing. The command line option --output overrides it.");
+    pl->set<std::string>(
+        "Directory", "output",
+        "Directory for all output files (summary.json, XDMF/HDF5, CSV); created "
+        "with its parents if missing. The command line option --output overrides it.");
     pl->set<std::string>("Base name", "solution",
                          "File name stem of the field output: <Base name>.xdmf and "
                          "<Base name>_c<NNNN>.h5 per adaptive cycle. No '/'.");
@@ -43,8 +44,9 @@ OutputSettings::OutputSettings(const Teuchos::ParameterList& outputSublist)
     pl.validateParametersAndSetDefaults(*getValidParameters());
   } catch (const std::exception& e) {
     // Teuchos' message names the key, the sublist and the valid keys.
-    SC_THROW_IF(true, sc::core::InputError, "Invalid parameter in sublist \"" << sublistName
-                                                << "\":\n" << e.what());
+    SC_THROW_IF(true, sc::core::InputError,
+                "Invalid parameter in sublist \"" << sublistName << "\":\n"
+                                                  << e.what());
   }
   directory = pl.get<std::string>("Directory");
   baseName = pl.get<std::string>("Base name");

@@ -25,10 +25,10 @@ public:
   /// values.
   explicit OutputSettings(const Teuchos::ParameterList& outputSublist);
 
-  std::string directory;     ///< Output/Directory
-  std::string baseName;      ///< Output/Base name
-  bool writeXdmf;            ///< Output/Write XDMF
-  bool writeContactCsv;      ///< Output/Write contact CSV
+  std::string directory;                ///< Output/Directory
+  std::string baseName;                 ///< Output/Base name
+  bool writeXdmf;                       ///< Output/Write XDMF
+  bool writeContactCsv;                 ///< Output/Write contact CSV
   std::array<double, 3> momentPoint{};  ///< Output/Moment point (x0 of the reactions' moments)
 };
 

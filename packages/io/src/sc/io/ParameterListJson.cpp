@@ -14,8 +14,7 @@ using Json = nlohmann::ordered_json;
 template <class T>
 bool tryArray(const Teuchos::any& value, Json& out)
 {
-  if (value.type() != typeid(Teuchos::Array<T>))
-    return false;
+  if (value.type() != typeid(Teuchos::Array<T>)) return false;
   out = Json::array();
   for (const T& v : Teuchos::any_cast<Teuchos::Array<T>>(value))
     out.push_back(v);
@@ -25,8 +24,7 @@ bool tryArray(const Teuchos::any& value, Json& out)
 template <class T>
 bool tryTwoDArray(const Teuchos::any& value, Json& out)
 {
-  if (value.type() != typeid(Teuchos::TwoDArray<T>))
-    return false;
+  if (value.type() != typeid(Teuchos::TwoDArray<T>)) return false;
   const auto& a = Teuchos::any_cast<Teuchos::TwoDArray<T>>(value);
   out = Json::array();
   for (typename Teuchos::TwoDArray<T>::size_type i = 0; i < a.getNumRows(); ++i) {
@@ -41,8 +39,7 @@ bool tryTwoDArray(const Teuchos::any& value, Json& out)
 template <class T>
 bool tryScalar(const Teuchos::any& value, Json& out)
 {
-  if (value.type() != typeid(T))
-    return false;
+  if (value.type() != typeid(T)) return false;
   out = Teuchos::any_cast<T>(value);
   return true;
 }
@@ -73,8 +70,9 @@ nlohmann::ordered_json toJson(const Teuchos::ParameterList& list)
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string& name = list.name(it);
     const Teuchos::ParameterEntry& entry = list.entry(it);
-    out[name] = entry.isList() ? toJson(Teuchos::any_cast<Teuchos::ParameterList>(entry.getAny(false)))
-                               : entryToJson(entry);
+    out[name] = entry.isList()
+                    ? toJson(Teuchos::any_cast<Teuchos::ParameterList>(entry.getAny(false)))
+                    : entryToJson(entry);
   }
   return out;
 }

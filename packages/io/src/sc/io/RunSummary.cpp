@@ -14,8 +14,7 @@ using Json = nlohmann::ordered_json;
 
 RunSummary::RunSummary(Teuchos::RCP<const Teuchos::Comm<int>> comm, const std::string& directory,
                        const std::string& version, const Teuchos::ParameterList& parameters)
-    : comm_(std::move(comm)),
-      path_((std::filesystem::path(directory) / "summary.json").string())
+    : comm_(std::move(comm)), path_((std::filesystem::path(directory) / "summary.json").string())
 {
   SC_THROW_IF(comm_.is_null(), sc::core::InternalError, "RunSummary: null communicator");
   // Key order is the schema order of docs/output.md.
@@ -32,9 +31,11 @@ Json RunSummary::makeCycleEntry(int cycle)
   Json c;
   c["cycle"] = cycle;
   c["elements"] = nullptr;
-  c["dofs"] = Json{{"stress", nullptr}, {"displacement", nullptr}, {"rotation", nullptr},
-                   {"total", nullptr}};
-  c["mesh"] = Json{{"vertices", nullptr}, {"elements", nullptr}, {"measure", nullptr},
+  c["dofs"] = Json{
+      {"stress", nullptr}, {"displacement", nullptr}, {"rotation", nullptr}, {"total", nullptr}};
+  c["mesh"] = Json{{"vertices", nullptr},
+                   {"elements", nullptr},
+                   {"measure", nullptr},
                    {"min_angle_deg", nullptr}};
   c["eta"] = Json::object();
   c["errors"] = Json::object();
@@ -72,8 +73,7 @@ void RunSummary::setError(const std::string& message)
 
 void RunSummary::writeLocal() const
 {
-  if (comm_->getRank() != 0)
-    return;
+  if (comm_->getRank() != 0) return;
   // Replace invalid UTF-8 (e.g. from a system error message) instead of throwing: the summary
   // is also written from error handlers and must not fail there.
   writeFileAtomically(path_, json_.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");

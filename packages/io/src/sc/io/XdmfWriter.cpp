@@ -6,7 +6,6 @@
 
 #include <sc/core/Error.hpp>
 
-
 #include <hdf5.h>
 
 #include "sc/io/detail/Hdf5Handles.hpp"
@@ -37,12 +36,12 @@ std::string xmlEscape(const std::string& s)
   out.reserve(s.size());
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+    case '&': out += "&amp;"; break;
+    case '<': out += "&lt;"; break;
+    case '>': out += "&gt;"; break;
+    case '"': out += "&quot;"; break;
+    case '\'': out += "&apos;"; break;
+    default: out += c;
     }
   }
   return out;
@@ -65,7 +64,8 @@ struct H5Context {
           err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO || err == EROFS;
       SC_THROW_IF(true, sc::core::Error,
                   "HDF5 error: " << what << " failed for '" << object << "' in file '" << file
-                                 << "'" << (writeError ? std::string(": ") + std::strerror(err) : ""));
+                                 << "'"
+                                 << (writeError ? std::string(": ") + std::strerror(err) : ""));
     }
     return id;
   }
@@ -90,17 +90,16 @@ void writeDataset(const H5Context& ctx, hid_t parent, const std::string& path, h
               H5Dclose);
   // Nothing to transfer anywhere (HDF5 rejects a write to a zero-sized dataset); every rank
   // knows globalRows, so all skip the collective write together.
-  if (globalRows == 0)
-    return;
+  if (globalRows == 0) return;
   Handle memSpace(ctx.check(H5Screate_simple(rank, localDims, nullptr), "H5Screate_simple", path),
                   H5Sclose);
   if (localRows == 0) {
     ctx.check(H5Sselect_none(fileSpace.get()), "H5Sselect_none", path);
     ctx.check(H5Sselect_none(memSpace.get()), "H5Sselect_none", path);
   } else {
-    ctx.check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, localDims,
-                                  nullptr),
-              "H5Sselect_hyperslab", path);
+    ctx.check(
+        H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, localDims, nullptr),
+        "H5Sselect_hyperslab", path);
   }
   Handle dxpl(ctx.check(H5Pcreate(H5P_DATASET_XFER), "H5Pcreate(DATASET_XFER)", path), H5Pclose);
   ctx.check(H5Pset_dxpl_mpio(dxpl.get(), H5FD_MPIO_COLLECTIVE), "H5Pset_dxpl_mpio", path);
@@ -119,10 +118,10 @@ void writeStringAttribute(const H5Context& ctx, hid_t object, const std::string&
   ctx.check(H5Tset_size(type.get(), std::max<std::size_t>(value.size(), 1)), "H5Tset_size", where);
   ctx.check(H5Tset_strpad(type.get(), H5T_STR_NULLPAD), "H5Tset_strpad", where);
   Handle space(ctx.check(H5Screate(H5S_SCALAR), "H5Screate", where), H5Sclose);
-  Handle attr(ctx.check(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT,
-                                   H5P_DEFAULT),
-                        "H5Acreate2", where),
-              H5Aclose);
+  Handle attr(
+      ctx.check(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                "H5Acreate2", where),
+      H5Aclose);
   const char empty = '\0';
   ctx.check(H5Awrite(attr.get(), type.get(), value.empty() ? &empty : value.data()), "H5Awrite",
             where);
@@ -134,10 +133,10 @@ void writeScalarAttribute(const H5Context& ctx, hid_t object, const std::string&
 {
   const std::string where = "/@" + name;
   Handle space(ctx.check(H5Screate(H5S_SCALAR), "H5Screate", where), H5Sclose);
-  Handle attr(ctx.check(H5Acreate2(object, name.c_str(), memType, space.get(), H5P_DEFAULT,
-                                   H5P_DEFAULT),
-                        "H5Acreate2", where),
-              H5Aclose);
+  Handle attr(
+      ctx.check(H5Acreate2(object, name.c_str(), memType, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                "H5Acreate2", where),
+      H5Aclose);
   ctx.check(H5Awrite(attr.get(), memType, &value), "H5Awrite", where);
 }
 
@@ -146,33 +145,32 @@ std::vector<double> toStoredLayout(const Field& field, int dim, std::size_t coun
 {
   const int in = inputComponents(field.kind, dim);
   const int out = storedComponents(field.kind);
-  if (in == out)
-    return field.values;
+  if (in == out) return field.values;
   std::vector<double> stored(count * static_cast<std::size_t>(out), 0.0);
   for (std::size_t e = 0; e < count; ++e) {
     const double* v = field.values.data() + e * static_cast<std::size_t>(in);
     double* s = stored.data() + e * static_cast<std::size_t>(out);
     switch (field.kind) {
-      case FieldKind::Scalar: s[0] = v[0]; break;
-      case FieldKind::Vector:
-        for (int i = 0; i < dim; ++i)
-          s[i] = v[i];
-        break;
-      case FieldKind::Tensor:  // dim == 2: 2x2 into the upper-left block of 3x3
-        for (int i = 0; i < dim; ++i)
-          for (int j = 0; j < dim; ++j)
-            s[3 * i + j] = v[dim * i + j];
-        break;
-      case FieldKind::SymmetricTensor:
-        if (dim == 2) {  // xx, yy, xy
-          s[0] = v[0], s[4] = v[1], s[1] = s[3] = v[2];
-        } else {  // Voigt: xx, yy, zz, yz, xz, xy
-          s[0] = v[0], s[4] = v[1], s[8] = v[2];
-          s[5] = s[7] = v[3];
-          s[2] = s[6] = v[4];
-          s[1] = s[3] = v[5];
-        }
-        break;
+    case FieldKind::Scalar: s[0] = v[0]; break;
+    case FieldKind::Vector:
+      for (int i = 0; i < dim; ++i)
+        s[i] = v[i];
+      break;
+    case FieldKind::Tensor:  // dim == 2: 2x2 into the upper-left block of 3x3
+      for (int i = 0; i < dim; ++i)
+        for (int j = 0; j < dim; ++j)
+          s[3 * i + j] = v[dim * i + j];
+      break;
+    case FieldKind::SymmetricTensor:
+      if (dim == 2) {  // xx, yy, xy
+        s[0] = v[0], s[4] = v[1], s[1] = s[3] = v[2];
+      } else {  // Voigt: xx, yy, zz, yz, xz, xy
+        s[0] = v[0], s[4] = v[1], s[8] = v[2];
+        s[5] = s[7] = v[3];
+        s[2] = s[6] = v[4];
+        s[1] = s[3] = v[5];
+      }
+      break;
     }
   }
   return stored;
@@ -227,8 +225,9 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
     if (g.cellType == CellType::Vertex && (!g.geometryFrom.empty() || !g.connectivity.empty())) {
       err << "grid '" << g.name << "': a vertex grid (point cloud) has its own coordinates and "
           << "no connectivity (one cell per vertex, numbered by the writer), but it has "
-          << (g.geometryFrom.empty() ? std::to_string(g.connectivity.size()) + " connectivity entries"
-                                     : "geometryFrom = '" + g.geometryFrom + "'");
+          << (g.geometryFrom.empty()
+                  ? std::to_string(g.connectivity.size()) + " connectivity entries"
+                  : "geometryFrom = '" + g.geometryFrom + "'");
       return err.str();
     }
     if (!g.geometryFrom.empty()) {
@@ -240,8 +239,8 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
         return err.str();
       }
       if (!g.coordinates.empty()) {
-        err << "grid '" << g.name << "' has both coordinates and geometryFrom = '"
-            << g.geometryFrom << "'";
+        err << "grid '" << g.name << "' has both coordinates and geometryFrom = '" << g.geometryFrom
+            << "'";
         return err.str();
       }
       if (it->spaceDim != g.spaceDim) {
@@ -279,20 +278,20 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
       return true;
     };
     for (const auto& f : g.pointFields) {
-      if (!checkName(f.name))
-        return err.str();
-      const std::size_t want = vertices * static_cast<std::size_t>(inputComponents(f.kind, g.spaceDim));
+      if (!checkName(f.name)) return err.str();
+      const std::size_t want =
+          vertices * static_cast<std::size_t>(inputComponents(f.kind, g.spaceDim));
       if (f.values.size() != want) {
         err << "grid '" << g.name << "': point field '" << f.name << "' (" << fieldKindName(f.kind)
-            << ") has " << f.values.size() << " values, expected " << want << " ("
-            << vertices << " owned vertices x " << inputComponents(f.kind, g.spaceDim) << ")";
+            << ") has " << f.values.size() << " values, expected " << want << " (" << vertices
+            << " owned vertices x " << inputComponents(f.kind, g.spaceDim) << ")";
         return err.str();
       }
     }
     for (const auto& f : g.cellFields) {
-      if (!checkName(f.name))
-        return err.str();
-      const std::size_t want = cells * static_cast<std::size_t>(inputComponents(f.kind, g.spaceDim));
+      if (!checkName(f.name)) return err.str();
+      const std::size_t want =
+          cells * static_cast<std::size_t>(inputComponents(f.kind, g.spaceDim));
       if (f.values.size() != want) {
         err << "grid '" << g.name << "': cell field '" << f.name << "' (" << fieldKindName(f.kind)
             << ") has " << f.values.size() << " values, expected " << want << " (" << cells
@@ -301,8 +300,7 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
       }
     }
     for (const auto& f : g.integerPointFields) {
-      if (!checkName(f.name))
-        return err.str();
+      if (!checkName(f.name)) return err.str();
       if (f.values.size() != vertices) {
         err << "grid '" << g.name << "': integer point field '" << f.name << "' has "
             << f.values.size() << " values, expected " << vertices << " (owned vertices)";
@@ -310,8 +308,7 @@ std::string checkLocal(const std::vector<GridPiece>& grids)
       }
     }
     for (const auto& f : g.integerCellFields) {
-      if (!checkName(f.name))
-        return err.str();
+      if (!checkName(f.name)) return err.str();
       if (f.values.size() != cells) {
         err << "grid '" << g.name << "': integer cell field '" << f.name << "' has "
             << f.values.size() << " values, expected " << cells << " (owned cells)";
@@ -334,10 +331,9 @@ std::string dataItem(const std::string& file, const std::string& path, unsigned 
 {
   std::ostringstream x;
   x << "<DataItem Dimensions=\"" << rows;
-  if (cols != 1)
-    x << ' ' << cols;
-  x << "\" NumberType=\"" << numberType << "\" Precision=\"" << precision
-    << "\" Format=\"HDF\">" << xmlEscape(file) << ":" << path << "</DataItem>";
+  if (cols != 1) x << ' ' << cols;
+  x << "\" NumberType=\"" << numberType << "\" Precision=\"" << precision << "\" Format=\"HDF\">"
+    << xmlEscape(file) << ":" << path << "</DataItem>";
   return x.str();
 }
 
@@ -378,15 +374,16 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
   const int size = comm.getSize();
 
   // 1. Validate before any collective HDF5 call, so a bad piece on one rank cannot hang others.
-  SC_THROW_IF(cycle < 0, sc::core::InputError, "XdmfWriter::writeStep: cycle = " << cycle << " < 0");
+  SC_THROW_IF(cycle < 0, sc::core::InputError,
+              "XdmfWriter::writeStep: cycle = " << cycle << " < 0");
   core::throwIfAnyRankFailed(comm, checkLocal(grids));
   const std::string mySignature = signature(grids);
   std::string rootSignature = mySignature;
   core::broadcast(comm, 0, rootSignature);
   core::throwIfAnyRankFailed(comm, mySignature == rootSignature
-                                 ? std::string()
-                                 : "grids/fields/information differ from rank 0's:\n" +
-                                       mySignature + "rank 0 has:\n" + rootSignature);
+                                       ? std::string()
+                                       : "grids/fields/information differ from rank 0's:\n" +
+                                             mySignature + "rank 0 has:\n" + rootSignature);
 
   // 2. Offsets of this rank's rows and global sizes, per grid: [vertices, cells].
   const std::size_t ng = grids.size();
@@ -409,8 +406,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
     geometryOf[g] = g;
     if (!grids[g].geometryFrom.empty())
       for (std::size_t o = 0; o < g; ++o)
-        if (grids[o].name == grids[g].geometryFrom)
-          geometryOf[g] = o;
+        if (grids[o].name == grids[g].geometryFrom) geometryOf[g] = o;
   }
 
   // Connectivity must refer to existing global vertices.
@@ -438,8 +434,7 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
     for (std::size_t g = 0; g < ng; ++g) {
       const auto nv = static_cast<unsigned long long>(total[2 * geometryOf[g]]);
       const auto nc = static_cast<unsigned long long>(total[2 * g + 1]);
-      if (grids[g].geometryFrom.empty())
-        bytes += nv * 3 * 8;
+      if (grids[g].geometryFrom.empty()) bytes += nv * 3 * 8;
       bytes += nc * static_cast<unsigned long long>(verticesPerCell(grids[g].cellType)) * 8;
       for (const auto& f : grids[g].pointFields)
         bytes += nv * static_cast<unsigned long long>(storedComponents(f.kind)) * 8;
@@ -477,10 +472,10 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
     for (std::size_t g = 0; g < ng; ++g) {
       const GridPiece& grid = grids[g];
       const std::string group = "/" + grid.name;
-      Handle gid(ctx.check(H5Gcreate2(file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                                      H5P_DEFAULT),
-                           "H5Gcreate2", group),
-                 H5Gclose);
+      Handle gid(
+          ctx.check(H5Gcreate2(file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                    "H5Gcreate2", group),
+          H5Gclose);
       for (const auto& [key, value] : grid.information)
         writeStringAttribute(ctx, gid.get(), group, key, value);
 
@@ -501,7 +496,8 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
         std::vector<double> xyz(nvLocal * 3, 0.0);
         for (hsize_t v = 0; v < nvLocal; ++v)
           for (int d = 0; d < dim; ++d)
-            xyz[3 * v + static_cast<hsize_t>(d)] = grid.coordinates[v * static_cast<hsize_t>(dim) + static_cast<hsize_t>(d)];
+            xyz[3 * v + static_cast<hsize_t>(d)] =
+                grid.coordinates[v * static_cast<hsize_t>(dim) + static_cast<hsize_t>(d)];
         writeDataset(ctx, file.get(), geometryPath, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE,
                      xyz.empty() ? nullptr : xyz.data(), nvLocal, nvOffset, nvTotal, 3);
       }
@@ -514,8 +510,8 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
       const std::vector<long long>& connectivity =
           grid.cellType == CellType::Vertex ? identity : grid.connectivity;
       writeDataset(ctx, file.get(), topologyPath, H5T_NATIVE_LLONG, H5T_STD_I64LE,
-                   connectivity.empty() ? nullptr : connectivity.data(), ncLocal,
-                   ncOffset, ncTotal, static_cast<hsize_t>(nvpc));
+                   connectivity.empty() ? nullptr : connectivity.data(), ncLocal, ncOffset, ncTotal,
+                   static_cast<hsize_t>(nvpc));
 
       // The grid's XDMF element. A grid without cells anywhere is left out of the .xdmf (its
       // datasets are still in the .h5): ParaView's reader rejects zero-sized DataItems.
@@ -539,9 +535,8 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
         const std::vector<double> stored = toStoredLayout(f, dim, n);
         const int comps = storedComponents(f.kind);
         writeDataset(ctx, file.get(), path, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE,
-                     stored.empty() ? nullptr : stored.data(), n,
-                     onPoints ? nvOffset : ncOffset, onPoints ? nvTotal : ncTotal,
-                     static_cast<hsize_t>(comps));
+                     stored.empty() ? nullptr : stored.data(), n, onPoints ? nvOffset : ncOffset,
+                     onPoints ? nvTotal : ncTotal, static_cast<hsize_t>(comps));
         x << "          <Attribute Name=\"" << f.name << "\" AttributeType=\""
           << xdmfAttributeType(f.kind) << "\" Center=\"" << (onPoints ? "Node" : "Cell")
           << "\">\n            "
@@ -563,10 +558,10 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
       // Intermediate groups for the fields (H5Dcreate2 does not create them by default).
       for (const char* sub : {"/point", "/cell"}) {
         const std::string p = group + sub;
-        Handle sg(ctx.check(H5Gcreate2(file.get(), p.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                                       H5P_DEFAULT),
-                            "H5Gcreate2", p),
-                  H5Gclose);
+        Handle sg(
+            ctx.check(H5Gcreate2(file.get(), p.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                      "H5Gcreate2", p),
+            H5Gclose);
       }
       for (const auto& f : grid.pointFields)
         writeField(f, true);
@@ -578,15 +573,13 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
         writeIntField(f.name, f.values, false);
       writeIntField("partition", std::vector<int>(ncLocal, rank), false);
       x << "        </Grid>\n";
-      if (ncTotal > 0)
-        stepXml << x.str();
+      if (ncTotal > 0) stepXml << x.str();
     }
     stepXml << "      </Grid>\n";
     SC_THROW_IF(file.close() < 0, sc::core::Error,
                 "HDF5 error: H5Fclose failed for file '" << tmpPath << "'");
   } catch (...) {
-    if (rank == 0)
-      std::remove(tmpPath.c_str());  // no stray temporary after a failed write
+    if (rank == 0) std::remove(tmpPath.c_str());  // no stray temporary after a failed write
     throw;
   }
 
@@ -596,7 +589,8 @@ void XdmfWriter::writeStep(int cycle, double time, const std::vector<GridPiece>&
   core::runOnRoot(comm, [&] {
     renameFile(tmpPath, finalPath);
     const Step step{cycle, time, stepXml.str()};
-    auto it = std::find_if(steps_.begin(), steps_.end(), [&](const Step& s) { return s.cycle == cycle; });
+    auto it =
+        std::find_if(steps_.begin(), steps_.end(), [&](const Step& s) { return s.cycle == cycle; });
     if (it != steps_.end())
       *it = step;
     else
@@ -619,8 +613,8 @@ void XdmfWriter::rewriteXdmf() const
   x << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
     << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
     << "  <Domain>\n"
-    << "    <Grid GridType=\"Collection\" CollectionType=\"Temporal\" Name=\"" << xmlEscape(baseName_)
-    << "\">\n";
+    << "    <Grid GridType=\"Collection\" CollectionType=\"Temporal\" Name=\""
+    << xmlEscape(baseName_) << "\">\n";
   for (const Step& s : steps_)
     x << s.xml;
   x << "    </Grid>\n"

@@ -1,5 +1,6 @@
 #pragma once
-// Conforming local and uniform refinement of simplicial meshes by bisection (docs/theory.md §"Adaptivity"):
+// Conforming local and uniform refinement of simplicial meshes by bisection (docs/theory.md
+// §"Adaptivity"):
 // - 2D: newest-vertex bisection (NVB). Each triangle stores its vertices (v0, v1, v2) with the
 //   refinement edge v0v1 opposite the newest vertex v2; children (v2, v0, m) and (v1, v2, m) keep
 //   the positive orientation. The initial refinement edge is the longest edge.
@@ -67,13 +68,13 @@ public:
   /// face that was split.
   struct State {
     int dim = 0;
-    std::vector<double> coordinates;     ///< dim per vertex
-    std::vector<int> elementVertices;    ///< dim+1 per element, in refinement order
-    std::vector<int> generations;        ///< per element
-    std::vector<unsigned char> codes;    ///< 3D: face markings and flag, per element
+    std::vector<double> coordinates;           ///< dim per vertex
+    std::vector<int> elementVertices;          ///< dim+1 per element, in refinement order
+    std::vector<int> generations;              ///< per element
+    std::vector<unsigned char> codes;          ///< 3D: face markings and flag, per element
     std::vector<std::uint64_t> boundaryEdges;  ///< 2D: edge keys
     std::vector<int> boundaryEdgeParts;
-    std::vector<int> boundaryFaces;      ///< 3D: 3 sorted vertices per face
+    std::vector<int> boundaryFaces;  ///< 3D: 3 sorted vertices per face
     std::vector<int> boundaryFaceParts;
     std::vector<std::uint64_t> curvedEdges;  ///< 3D: edges of curved boundary faces
     std::vector<int> curvedEdgeParts;

@@ -34,7 +34,10 @@ public:
   void nodes(int element, double* xyz) const;
   /// True if mesh edge `edge` is curved; its midpoint node (3 coordinates).
   bool isCurvedEdge(int edge) const { return edgeSlot_[edge] >= 0; }
-  const double* edgeMidpoint(int edge) const { return &midpoints_[3 * static_cast<std::size_t>(edgeSlot_[edge])]; }
+  const double* edgeMidpoint(int edge) const
+  {
+    return &midpoints_[3 * static_cast<std::size_t>(edgeSlot_[edge])];
+  }
   /// Largest distance of a midpoint node from its chord midpoint, relative to the edge length
   /// (≈ h/(8R) for a circle of radius R): how much the geometry differs from the straight mesh.
   double maxRelativeBulge() const { return maxBulge_; }

@@ -50,8 +50,8 @@ public:
   /// Mesh `geometry` and write it with physical groups to `path` in MSH `version` 2.2 or 4.1, at
   /// geometric order `order` (used to produce the test meshes under packages/mesh/test/data and
   /// the second-order meshes of the tests).
-  static void writeGeometryMesh(const Geometry& geometry, double meshSize,
-                                const std::string& path, double version, int order = 1);
+  static void writeGeometryMesh(const Geometry& geometry, double meshSize, const std::string& path,
+                                double version, int order = 1);
 };
 
 }  // namespace sc::mesh

@@ -1,6 +1,6 @@
 #pragma once
-// Hertz 3D scene (docs/theory.md §"Scenes"): x² + y² + (z−1)² < R², z < 1. Boundary parts: "Top" (the flat disc
-// z = 1, part id 0) and "Cap" (the lower hemisphere, curved, part id 1).
+// Hertz 3D scene (docs/theory.md §"Scenes"): x² + y² + (z−1)² < R², z < 1. Boundary parts: "Top"
+// (the flat disc z = 1, part id 0) and "Cap" (the lower hemisphere, curved, part id 1).
 
 #include <sc/mesh/Geometry.hpp>
 

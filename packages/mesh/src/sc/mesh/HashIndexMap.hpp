@@ -74,7 +74,8 @@ public:
   void reserve(std::size_t expected)
   {
     std::size_t cap = 16;
-    while (cap < 2 * expected) cap *= 2;
+    while (cap < 2 * expected)
+      cap *= 2;
     if (cap > keys_.size()) rehash(cap);
   }
 
@@ -83,7 +84,7 @@ public:
   /// Pointer to the value of `key`, or nullptr.
   const int* find(const Key& key) const
   {
-    std::size_t i = KeyHash{}(key) & mask_;
+    std::size_t i = KeyHash{}(key)&mask_;
     while (true) {
       if (keyEqual(keys_[i], key)) return &values_[i];
       if (keyEqual(keys_[i], empty_)) return nullptr;
@@ -96,7 +97,7 @@ public:
   std::pair<int*, bool> insert(const Key& key, int value)
   {
     if (2 * (size_ + 1) > keys_.size()) rehash(2 * keys_.size());
-    std::size_t i = KeyHash{}(key) & mask_;
+    std::size_t i = KeyHash{}(key)&mask_;
     while (true) {
       if (keyEqual(keys_[i], key)) return {&values_[i], false};
       if (keyEqual(keys_[i], empty_)) {

@@ -19,7 +19,7 @@ namespace sc::mesh {
 
 const std::vector<std::string>& MeshFactory::sources()
 {
-  static const std::vector<std::string> s = {"Half disc", "Half ball", "Unit square", "Unit cube",
+  static const std::vector<std::string> s = {"Half disc", "Half ball", "Unit square",  "Unit cube",
                                              "Rectangle", "Gmsh file", "Gmsh geometry"};
   return s;
 }
@@ -145,8 +145,8 @@ LocalRefinementSettings LocalRefinementSettings::fromParameters(const Teuchos::P
   return s;
 }
 
-LocalRefinementSettings LocalRefinementSettings::fromUncheckedParameters(
-    const Teuchos::ParameterList& local)
+LocalRefinementSettings
+LocalRefinementSettings::fromUncheckedParameters(const Teuchos::ParameterList& local)
 {
   return fromParameters(validatedLocal(local));
 }
@@ -190,7 +190,8 @@ Teuchos::RCP<const Geometry> MeshFactory::buildGeometry(const MeshSettings& s, i
   if (source == "Half ball") return Teuchos::rcp(new HalfBallGeometry(R));
   if (source == "Unit square") return Teuchos::rcp(new BoxGeometry({0, 0}, {1, 1}, source));
   if (source == "Unit cube") return Teuchos::rcp(new BoxGeometry({0, 0, 0}, {1, 1, 1}, source));
-  if (source == "Rectangle") return Teuchos::rcp(new BoxGeometry(s.lowerCorner, s.upperCorner, source));
+  if (source == "Rectangle")
+    return Teuchos::rcp(new BoxGeometry(s.lowerCorner, s.upperCorner, source));
   if (source == "Gmsh geometry") {
     SC_THROW_IF(s.file.empty(), sc::core::InputError,
                 "'Mesh/Source' = 'Gmsh geometry' needs 'Mesh/File' (path of a .geo script)");
@@ -217,7 +218,8 @@ struct LocalSelection {
     double r2 = 0.0;
     for (int j = 0; j < d; ++j) {
       double c = 0.0;
-      for (int i = 0; i < n; ++i) c += m.vertex(verts[i])[j] / n;
+      for (int i = 0; i < n; ++i)
+        c += m.vertex(verts[i])[j] / n;
       r2 += (c - center[j]) * (c - center[j]);
     }
     return r2 < radius * radius;
@@ -243,9 +245,11 @@ LocalSelection localSelection(const SimplexMesh& mesh, const LocalRefinementSett
   s.d = mesh.dim();
   s.center = local.center;
   SC_THROW_IF(static_cast<int>(s.center.size()) != s.d, sc::core::InputError,
-              "'Mesh/Local refinement/Center' needs " << s.d << " values (the problem dimension) "
-              "when 'Mesh/Local refinement/Levels' = " << local.levels << " > 0; got "
-              << s.center.size() << ".");
+              "'Mesh/Local refinement/Center' needs " << s.d
+                                                      << " values (the problem dimension) "
+                                                         "when 'Mesh/Local refinement/Levels' = "
+                                                      << local.levels << " > 0; got "
+                                                      << s.center.size() << ".");
   s.radius = local.radius;
   // boundaryId() throws an InputError listing the valid part names.
   s.part = local.boundary.empty() ? -1 : mesh.boundaryId(local.boundary);
@@ -263,10 +267,10 @@ void checkInitialEstimate(const MeshSettings& p, int dimension, const ResourceLi
   if (!(n > limit.maxElements())) return;
   const double hMin = h * std::pow(n / limit.maxElements(), 1.0 / dimension);
   SC_THROW_IF(true, sc::core::InputError,
-              "'Mesh/Initial mesh size' = " << h << " is too small: the initial mesh of the '"
-                  << p.source << "' (" << (dimension == 2 ? "area " : "volume ")
-                  << measure << ") would have " << limit.describe(n)
-                  << ". Make 'Mesh/Initial mesh size' at least about " << hMin
+              "'Mesh/Initial mesh size' = "
+                  << h << " is too small: the initial mesh of the '" << p.source << "' ("
+                  << (dimension == 2 ? "area " : "volume ") << measure << ") would have "
+                  << limit.describe(n) << ". Make 'Mesh/Initial mesh size' at least about " << hMin
                   << " or raise 'Mesh/Memory limit (GB)' on a larger machine.");
 }
 
@@ -281,16 +285,17 @@ void checkRefinementEstimate(const MeshSettings& p, const SimplexMesh& initial,
   if (n0 > maxN)
     SC_THROW_IF(true, sc::core::InputError,
                 "the initial mesh (" << initial.origin() << ") has " << limit.describe(n0)
-                    << ". Use a coarser mesh.");
+                                     << ". Use a coarser mesh.");
   const int uniform = p.uniformRefinements;
   const double nU = n0 * std::pow(2.0, d * uniform);
   if (nU > maxN) {
     const int fit = static_cast<int>(std::floor(std::log2(maxN / n0) / d));
     SC_THROW_IF(true, sc::core::InputError,
                 "'Mesh/Uniform refinements' = " << uniform << " is too many: the initial mesh's "
-                    << initial.numElements() << " elements times " << (1 << d) << " per level would give "
-                    << limit.describe(nU) << ". At most " << std::max(fit, 0)
-                    << " uniform levels fit.");
+                                                << initial.numElements() << " elements times "
+                                                << (1 << d) << " per level would give "
+                                                << limit.describe(nU) << ". At most "
+                                                << std::max(fit, 0) << " uniform levels fit.");
   }
   const int levels = p.local.levels;
   if (levels == 0) return;
@@ -303,9 +308,11 @@ void checkRefinementEstimate(const MeshSettings& p, const SimplexMesh& initial,
       if (MeshFactory::estimateRefinement(q, initial).local > maxN) break;
     }
     SC_THROW_IF(true, sc::core::InputError,
-                "'Mesh/Local refinement/Levels' = " << levels << " is too many: "
-                    << static_cast<long long>(est.selected) << " selected elements, growing about "
-                    << std::round(est.growth * 100.0) / 100.0 << " times per sweep, each with about " << est.closure
+                "'Mesh/Local refinement/Levels' = "
+                    << levels << " is too many: " << static_cast<long long>(est.selected)
+                    << " selected elements, growing about "
+                    << std::round(est.growth * 100.0) / 100.0
+                    << " times per sweep, each with about " << est.closure
                     << " new elements with the closure, would give " << limit.describe(est.local)
                     << ". At most " << fit
                     << " sweeps fit; fewer sweeps or a smaller 'Mesh/Local refinement/Radius'.");
@@ -348,7 +355,8 @@ MeshEstimate MeshFactory::estimateRefinement(const MeshSettings& p, const Simple
   // ones with the conforming closure (calibrated: docs/mesh.md "Resource limits").
   e.growth = surface ? std::pow(2.0, (d - 1.0) / d) : 2.0;
   e.closure = closureFactor(d, surface);
-  e.local = e.uniform + e.closure * e.selected * (std::pow(e.growth, levels) - 1.0) / (e.growth - 1.0);
+  e.local =
+      e.uniform + e.closure * e.selected * (std::pow(e.growth, levels) - 1.0) / (e.growth - 1.0);
   return e;
 }
 
@@ -381,7 +389,8 @@ Teuchos::RCP<BisectionRefiner> finish(const MeshSettings& p,
               "but 'Mesh/Project boundary' = false keeps the initial polygon: set 'Mesh/Geometry "
               "order' = 1 for the straight-boundaries study, or 'Mesh/Project boundary' = true.");
   auto refiner = Teuchos::rcp(new BisectionRefiner(initial, geometry, p.projectBoundary));
-  for (int i = 0; i < p.uniformRefinements; ++i) refiner->refineUniformly();
+  for (int i = 0; i < p.uniformRefinements; ++i)
+    refiner->refineUniformly();
   MeshFactory::refineLocally(*refiner, p.local, limit);
   return refiner;
 }
@@ -394,7 +403,8 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const MeshSettings& p, int dim
                                                   const ResourceLimit& limit)
 {
   if (comm.getSize() == 1) return build(p, dimension, splitBoundarySimplices, limit);
-  auto geometry = buildGeometry(p, dimension);  // the same settings on every rank: throws everywhere
+  auto geometry =
+      buildGeometry(p, dimension);            // the same settings on every rank: throws everywhere
   checkInitialEstimate(p, dimension, limit);  // the same limit on every rank: throws everywhere
   std::vector<double> coords, boundaryNodes;
   std::vector<int> elems, bfv, bpart, boundaryPart;
@@ -413,7 +423,8 @@ Teuchos::RCP<BisectionRefiner> MeshFactory::build(const MeshSettings& p, int dim
       bfv.insert(bfv.end(), m->faceVertices(f), m->faceVertices(f) + dimension);
       bpart.push_back(m->faceBoundaryId(f));
     }
-    for (const auto& n : m->boundaryNames()) names += n + '\n';
+    for (const auto& n : m->boundaryNames())
+      names += n + '\n';
     origin = m->origin();
   });
   core::broadcast(comm, 0, coords);
@@ -463,13 +474,13 @@ void MeshFactory::refineLocally(BisectionRefiner& refiner, const LocalRefinement
     const std::vector<int> marked = sel.marked(*m);
     if (marked.empty()) break;  // the region holds no element (or face) centroid any more
     // The estimate of build() is checked again with the real counts before each sweep.
-    const double next = m->numElements() + closureFactor(m->dim(), sel.part >= 0) *
-                                               static_cast<double>(marked.size());
+    const double next = m->numElements() +
+                        closureFactor(m->dim(), sel.part >= 0) * static_cast<double>(marked.size());
     SC_THROW_IF(limit.active() && next > limit.maxElements(), sc::core::InputError,
-                "'Mesh/Local refinement/Levels' = " << levels << " is too many: sweep "
-                    << level + 1 << " would bisect " << marked.size() << " of "
-                    << m->numElements() << " elements, giving " << limit.describe(next)
-                    << ". At most " << level << " sweeps fit.");
+                "'Mesh/Local refinement/Levels' = "
+                    << levels << " is too many: sweep " << level + 1 << " would bisect "
+                    << marked.size() << " of " << m->numElements() << " elements, giving "
+                    << limit.describe(next) << ". At most " << level << " sweeps fit.");
     refiner.refine(marked);
   }
 }
@@ -502,8 +513,7 @@ bool MeshFactory::hasCurvedElements(const MeshSettings& settings, const Bisectio
 Teuchos::RCP<const CurvedElements> MeshFactory::curvedElements(const MeshSettings& settings,
                                                                const BisectionRefiner& refiner)
 {
-  if (!hasCurvedElements(settings, refiner))
-    return Teuchos::null;
+  if (!hasCurvedElements(settings, refiner)) return Teuchos::null;
   return Teuchos::rcp(new CurvedElements(refiner.mesh(), *refiner.geometry()));
 }
 

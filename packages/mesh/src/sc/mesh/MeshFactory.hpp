@@ -52,11 +52,11 @@ public:
 
   /// build() from a "Mesh" list not yet checked (tests, tools):
   /// MeshSettings::fromUncheckedParameters (errors name 'Mesh/<key>'), then build().
-  static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
-                                              int dimension, bool splitBoundarySimplices = false,
+  static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList, int dimension,
+                                              bool splitBoundarySimplices = false,
                                               const ResourceLimit& limit = ResourceLimit());
-  static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList,
-                                              int dimension, const Teuchos::Comm<int>& comm,
+  static Teuchos::RCP<BisectionRefiner> build(const Teuchos::ParameterList& meshList, int dimension,
+                                              const Teuchos::Comm<int>& comm,
                                               bool splitBoundarySimplices = false,
                                               const ResourceLimit& limit = ResourceLimit());
 

@@ -26,14 +26,14 @@ struct LocalRefinementSettings {
 
 /// "Mesh": the domain, the initial mesh and its refinements, the memory limit.
 struct MeshSettings {
-  std::string source;          ///< one of MeshFactory::sources()
-  double initialMeshSize{};    ///< Gmsh Mesh.MeshSizeMax of the initial mesh
-  int uniformRefinements{};    ///< uniform bisection levels of the initial mesh
-  double memoryLimitGB{};      ///< 0: the memory available when the run starts
-  bool projectBoundary{};      ///< new vertices on curved boundaries go onto the exact boundary
-  int geometryOrder{};         ///< 1: straight-sided elements, 2: quadratic at curved boundaries
-  double radius{};             ///< Half disc / Half ball
-  std::string file;            ///< Gmsh file / Gmsh geometry
+  std::string source;        ///< one of MeshFactory::sources()
+  double initialMeshSize{};  ///< Gmsh Mesh.MeshSizeMax of the initial mesh
+  int uniformRefinements{};  ///< uniform bisection levels of the initial mesh
+  double memoryLimitGB{};    ///< 0: the memory available when the run starts
+  bool projectBoundary{};    ///< new vertices on curved boundaries go onto the exact boundary
+  int geometryOrder{};       ///< 1: straight-sided elements, 2: quadratic at curved boundaries
+  double radius{};           ///< Half disc / Half ball
+  std::string file;          ///< Gmsh file / Gmsh geometry
   std::vector<double> lowerCorner, upperCorner;  ///< Rectangle
   LocalRefinementSettings local;
 

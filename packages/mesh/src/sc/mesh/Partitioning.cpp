@@ -14,7 +14,8 @@ namespace sc::mesh {
 std::vector<int> partitionElements(const SimplexMesh& mesh, int nparts)
 {
   const int ne = mesh.numElements();
-  SC_THROW_IF(nparts < 1, sc::core::InputError, "partitionElements: " << nparts << " parts requested");
+  SC_THROW_IF(nparts < 1, sc::core::InputError,
+              "partitionElements: " << nparts << " parts requested");
   if (nparts == 1) return std::vector<int>(ne, 0);
   SC_THROW_IF(nparts > ne, sc::core::InputError,
               mesh.origin() << ": cannot split " << ne << " elements into " << nparts
@@ -27,7 +28,8 @@ std::vector<int> partitionElements(const SimplexMesh& mesh, int nparts)
     ++xadj[fe[0] + 1];
     ++xadj[fe[1] + 1];
   }
-  for (int e = 0; e < ne; ++e) xadj[e + 1] += xadj[e];
+  for (int e = 0; e < ne; ++e)
+    xadj[e + 1] += xadj[e];
   std::vector<idx_t> adjncy(xadj[ne]);
   std::vector<idx_t> fill(xadj.begin(), xadj.end() - 1);
   for (int f = 0; f < mesh.numFaces(); ++f) {
@@ -43,9 +45,9 @@ std::vector<int> partitionElements(const SimplexMesh& mesh, int nparts)
   options[METIS_OPTION_NUMBERING] = 0;
   idx_t nv = ne, ncon = 1, np = nparts, objval = 0;
   std::vector<idx_t> part(ne, 0);
-  const int status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr,
-                                         nullptr, &np, nullptr, nullptr, options, &objval,
-                                         part.data());
+  const int status =
+      METIS_PartGraphKway(&nv, &ncon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr, &np,
+                          nullptr, nullptr, options, &objval, part.data());
   SC_THROW_IF(status != METIS_OK, sc::core::InternalError,
               mesh.origin() << ": METIS_PartGraphKway failed with status " << status);
   return std::vector<int>(part.begin(), part.end());
@@ -106,8 +108,7 @@ VertexOwnership vertexOwnership(const SimplexMesh& mesh, const std::vector<int>&
   for (std::size_t i = 0; i < nv; ++i)
     v.number[order[i]] = static_cast<long long>(i);
   for (std::size_t i = 0; i < nv; ++i)
-    if (v.owner[i] == rank)
-      v.owned.push_back(static_cast<int>(i));
+    if (v.owner[i] == rank) v.owned.push_back(static_cast<int>(i));
   return v;
 }
 

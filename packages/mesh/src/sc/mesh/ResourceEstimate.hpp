@@ -28,9 +28,10 @@ inline constexpr double kBytesPerDof3D = 7.4e3;
 /// The replicated mesh, per element and per rank (docs/mesh.md: about 0.4 kB per tetrahedron).
 inline constexpr double kMeshBytesPerElement = 400.0;
 /// New elements per element selected by a bisection sweep (its bisection and the conforming
-/// closure around it), fitted on the scenes (test MeshResources.RefinementEstimateMatchesTheRefiner,
-/// docs/mesh.md "Resource limits"): 3 in 2D; in 3D 16 for a volume region and 8 along a boundary
-/// part (3D bisection needs 3 generations to halve h, and the closure cascades further).
+/// closure around it), fitted on the scenes (test
+/// MeshResources.RefinementEstimateMatchesTheRefiner, docs/mesh.md "Resource limits"): 3 in 2D; in
+/// 3D 16 for a volume region and 8 along a boundary part (3D bisection needs 3 generations to halve
+/// h, and the closure cascades further).
 double closureFactor(int dimension, bool alongBoundary);
 
 /// Estimated elements of a mesh built by MeshFactory (MeshFactory::estimateRefinement).
@@ -67,7 +68,7 @@ double residentMemoryBytes();
 /// The limit a run's mesh is checked against.
 struct ResourceLimit {
   double memoryBytes = std::numeric_limits<double>::infinity();
-  std::string memorySource;   ///< e.g. "MemAvailable in /proc/meminfo"
+  std::string memorySource;  ///< e.g. "MemAvailable in /proc/meminfo"
   /// The program's own memory before any mesh (libraries, MPI, Kokkos: VmRSS summed over the
   /// ranks), counted in an explicit Mesh/Memory limit (GB); 0 under the default limit, the
   /// available memory, which is measured with that memory already in use.
@@ -75,7 +76,7 @@ struct ResourceLimit {
   int dimension = 2;
   int degree = 1;
   int ranks = 1;
-  long long maxDofs = 0;      ///< Adaptivity/Max DOFs (0: not given), named in messages
+  long long maxDofs = 0;  ///< Adaptivity/Max DOFs (0: not given), named in messages
   bool active() const { return memoryBytes < std::numeric_limits<double>::infinity(); }
   double dofs(double elements) const { return elements * dofsPerElement(dimension, degree); }
   /// Bytes of a run on a mesh of `elements` elements: DOFs · bytesPerDof + ranks · mesh.

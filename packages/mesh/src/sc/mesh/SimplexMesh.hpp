@@ -65,9 +65,15 @@ public:
   // Elements ---------------------------------------------------------------------------------
   /// All element vertices, dim()+1 per element (positive orientation).
   const std::vector<int>& elementVertices() const { return elemVerts_; }
-  const int* elementVertices(int e) const { return &elemVerts_[static_cast<std::size_t>(e) * (dim_ + 1)]; }
+  const int* elementVertices(int e) const
+  {
+    return &elemVerts_[static_cast<std::size_t>(e) * (dim_ + 1)];
+  }
   /// Faces of element e, dim()+1 entries; entry i is the face opposite local vertex i.
-  const int* elementFaces(int e) const { return &elemFaces_[static_cast<std::size_t>(e) * (dim_ + 1)]; }
+  const int* elementFaces(int e) const
+  {
+    return &elemFaces_[static_cast<std::size_t>(e) * (dim_ + 1)];
+  }
   /// Face on Intrepid2/shards side `side` of element e (see the conventions above).
   int sideFace(int e, int side) const { return elementFaces(e)[oppositeVertexOfSide(dim_, side)]; }
   /// Local vertex opposite shards side `side`: 2D {2, 0, 1}, 3D {2, 0, 1, 3}.

@@ -109,7 +109,8 @@ Teuchos::RCP<CrsMatrix> blockInverse(const CrsMatrix& M)
         const auto it = std::find(gids.begin(), gids.end(), g);
         SC_THROW_IF(it == gids.end() && v(k) != 0.0, sc::core::InternalError,
                     "block preconditioner: the displacement mass is not block diagonal with "
-                    "blocks owned by one rank (row " << gids[a] << ", column " << g << ")");
+                    "blocks owned by one rank (row "
+                        << gids[a] << ", column " << g << ")");
         if (it != gids.end())
           dense[static_cast<std::size_t>(it - gids.begin()) * m + a] = v(k);  // column-major
       }
@@ -118,12 +119,14 @@ Teuchos::RCP<CrsMatrix> blockInverse(const CrsMatrix& M)
     lapack.POTRF('L', m, dense.data(), m, &info);
     SC_THROW_IF(info != 0, sc::core::InternalError,
                 "block preconditioner: a displacement mass block is not positive definite "
-                "(LAPACK potrf info " << info << ", rows from " << gids[0] << ")");
+                "(LAPACK potrf info "
+                    << info << ", rows from " << gids[0] << ")");
     lapack.POTRI('L', m, dense.data(), m, &info);
     for (int a = 0; a < m; ++a) {
       std::vector<double> row(m);
       for (int c = 0; c < m; ++c)
-        row[c] = a >= c ? dense[static_cast<std::size_t>(c) * m + a] : dense[static_cast<std::size_t>(a) * m + c];
+        row[c] = a >= c ? dense[static_cast<std::size_t>(c) * m + a]
+                        : dense[static_cast<std::size_t>(a) * m + c];
       inv->insertGlobalValues(gids[a], Teuchos::ArrayView<const GO>(gids),
                               Teuchos::ArrayView<const double>(row));
     }

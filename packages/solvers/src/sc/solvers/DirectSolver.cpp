@@ -99,8 +99,8 @@ Teuchos::RCP<const CrsMatrix> DirectSolver::operatorToFactor()
     Teuchos::Time timer("equilibration");
     timer.start(true);
     if (!equilibration_)
-      equilibration_ = std::make_unique<RuizEquilibration>(factorizedSymmetric_, equilibrationIterations_,
-                                                           0.1);
+      equilibration_ =
+          std::make_unique<RuizEquilibration>(factorizedSymmetric_, equilibrationIterations_, 0.1);
     equilibration_->compute(*A_);
     if (!scaledA_.is_null() && scaledA_.get() != A_.get() &&
         scaledA_->getCrsGraph().get() == A_->getCrsGraph().get())

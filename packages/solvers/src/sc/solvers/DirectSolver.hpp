@@ -66,7 +66,7 @@ protected:
 private:
   Teuchos::RCP<const CrsMatrix> operatorToFactor();
 
-  Teuchos::RCP<const CrsMatrix> A_;        // the operator to factorise (after physical scaling)
+  Teuchos::RCP<const CrsMatrix> A_;  // the operator to factorise (after physical scaling)
   // D_r A D_c when equilibrating; its values are rewritten in place while the graph stays (a
   // contact Newton loop refactorises on one graph: no new matrix per step).
   Teuchos::RCP<CrsMatrix> scaledA_;

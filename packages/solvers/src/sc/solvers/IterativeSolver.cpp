@@ -45,8 +45,8 @@ public:
   std::vector<LO> stressLids, displacementLids, rotationLids;
   std::vector<double> rotationInverseDiagonal;
   Teuchos::RCP<CrsMatrix> displacementInverse;
-  Teuchos::RCP<DirectSolver> stressDirect;       // exact S_σ⁻¹
-  Teuchos::RCP<Operator> stressMultigrid;        // or one AMG / geometric multigrid V-cycle
+  Teuchos::RCP<DirectSolver> stressDirect;  // exact S_σ⁻¹
+  Teuchos::RCP<Operator> stressMultigrid;   // or one AMG / geometric multigrid V-cycle
 
   Teuchos::RCP<const Map> getDomainMap() const override { return map; }
   Teuchos::RCP<const Map> getRangeMap() const override { return map; }
@@ -100,16 +100,16 @@ struct IterativeSolver::Impl {
 };
 
 IterativeSolver::IterativeSolver(IterativeOptions options)
-  : options_(std::move(options)), impl_(std::make_unique<Impl>())
+    : options_(std::move(options)), impl_(std::make_unique<Impl>())
 {
   const auto& m = methods();
   SC_THROW_IF(std::find(m.begin(), m.end(), options_.method) == m.end(), sc::core::InputError,
-              "Linear Solver/Iterative/Method = \"" << options_.method
-                  << "\" is not available; valid: Auto, MINRES, GMRES");
+              "Linear Solver/Iterative/Method = \""
+                  << options_.method << "\" is not available; valid: Auto, MINRES, GMRES");
   const auto& s = stressBlockSolvers();
-  SC_THROW_IF(std::find(s.begin(), s.end(), options_.stressBlock) == s.end(),
-              sc::core::InputError,
-              "Linear Solver/Iterative/Stress block = \"" << options_.stressBlock
+  SC_THROW_IF(std::find(s.begin(), s.end(), options_.stressBlock) == s.end(), sc::core::InputError,
+              "Linear Solver/Iterative/Stress block = \""
+                  << options_.stressBlock
                   << "\" is not available; valid: MUMPS, KLU2, Multigrid, MueLu");
 }
 
@@ -129,8 +129,7 @@ const std::vector<std::string>& IterativeSolver::stressBlockSolvers()
 
 std::string IterativeSolver::method() const
 {
-  if (options_.method != "Auto")
-    return options_.method;
+  if (options_.method != "Auto") return options_.method;
   return impl_->symmetric ? "MINRES" : "GMRES";
 }
 
@@ -147,8 +146,8 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
               "setOperator");
   SC_THROW_IF(static_cast<long long>(A->getGlobalNumRows()) != blocks.end(2),
               sc::core::InternalError,
-              "iterative solver: the operator has " << A->getGlobalNumRows()
-                  << " rows, the block structure " << blocks.end(2));
+              "iterative solver: the operator has "
+                  << A->getGlobalNumRows() << " rows, the block structure " << blocks.end(2));
   SC_THROW_IF(options_.method == "MINRES" && !symmetric, sc::core::InputError,
               "Linear Solver/Iterative/Method = MINRES needs a symmetric operator, but this one "
               "is not (contact rows, or Linear Solver/Symmetric = false): use GMRES or Auto");
@@ -161,8 +160,9 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
   if (m.prec.is_null() || m.massUsed.get() != blocks.fieldMass.get() ||
       m.scalingUsed.get() != scaling().get() || !m.prec->map->isSameAs(*map)) {
     // Mass blocks of the working system: D (2μ M) D.
-    SC_THROW_IF(!blocks.fieldMass->getRowMap()->isSameAs(*map), sc::core::InternalError,
-                "block preconditioner: the field mass matrix's row map differs from the operator's");
+    SC_THROW_IF(
+        !blocks.fieldMass->getRowMap()->isSameAs(*map), sc::core::InternalError,
+        "block preconditioner: the field mass matrix's row map differs from the operator's");
     auto P = Teuchos::rcp(new CrsMatrix(*blocks.fieldMass, Teuchos::Copy));
     Vector s(map);  // √(2μ) D
     if (scaling().is_null())
@@ -264,8 +264,7 @@ void IterativeSolver::operatorChanged(const Teuchos::RCP<const CrsMatrix>& A, bo
 
 bool IterativeSolver::applyPreconditioner(const MultiVector& r, MultiVector& z) const
 {
-  if (impl_->prec.is_null())
-    return false;
+  if (impl_->prec.is_null()) return false;
   impl_->prec->apply(r, z);
   return true;
 }
@@ -280,7 +279,8 @@ void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
   params->set("Maximum Iterations", options_.maxIterations);
   params->set("Convergence Tolerance", options_.tolerance);
   if (options_.outputFrequency > 0) {
-    params->set("Verbosity", static_cast<int>(Belos::Errors + Belos::Warnings + Belos::StatusTestDetails));
+    params->set("Verbosity",
+                static_cast<int>(Belos::Errors + Belos::Warnings + Belos::StatusTestDetails));
     params->set("Output Frequency", options_.outputFrequency);
     params->set("Output Style", static_cast<int>(Belos::Brief));
   } else {
@@ -312,8 +312,8 @@ void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
   // MINRES monitors the preconditioned residual (docs/theory.md §"Linear solvers"): restart with a
   // tighter tolerance until the true one is below the requested tolerance.
   double tol = options_.tolerance;
-  for (int attempt = 0; residual > options_.tolerance && iterations < options_.maxIterations &&
-                        attempt < 6;
+  for (int attempt = 0;
+       residual > options_.tolerance && iterations < options_.maxIterations && attempt < 6;
        ++attempt) {
     auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MultiVector, Operator>(
         op, Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b)));
@@ -332,27 +332,26 @@ void IterativeSolver::solveOperator(const MultiVector& b, MultiVector& x)
       // Belos throws when its iteration breaks down (MINRES: an indefinite preconditioner or
       // operator, seen with the stress multigrid on adaptive contact meshes, docs/solvers.md):
       // a convergence error naming the solver and the remedy, not an anonymous exception
-      SC_THROW_IF(true, sc::core::ConvergenceError,
-                  name() << ": the Krylov iteration broke down after " << iterations
-                         << " iterations (" << e.what()
-                         << "). Try Linear Solver/Type = MUMPS, or a Stress block of MUMPS or KLU2.");
+      SC_THROW_IF(
+          true, sc::core::ConvergenceError,
+          name() << ": the Krylov iteration broke down after " << iterations << " iterations ("
+                 << e.what()
+                 << "). Try Linear Solver/Type = MUMPS, or a Stress block of MUMPS or KLU2.");
     }
     iterations += solver->getNumIters();
     const double previous = residual;
     residual = relativeResidual();
     if (residual > options_.tolerance)
       tol = std::max(1e-15, tol * 0.5 * options_.tolerance / residual);
-    if (!(residual < previous))
-      break;  // no progress: report below
+    if (!(residual < previous)) break;  // no progress: report below
   }
   stats_.iterations = iterations;
   stats_.totalIterations += iterations;
   stats_.solveSeconds = core::maxOverRanks(*m.A->getComm(), timer.stop());
   ++stats_.solves;
   SC_THROW_IF(!(residual <= options_.tolerance), sc::core::ConvergenceError,
-              name() << ": no convergence in " << iterations
-                     << " iterations: relative residual " << residual
-                     << " > Linear Solver/Iterative/Tolerance = " << options_.tolerance
+              name() << ": no convergence in " << iterations << " iterations: relative residual "
+                     << residual << " > Linear Solver/Iterative/Tolerance = " << options_.tolerance
                      << " (Maximum iterations = " << options_.maxIterations
                      << "). Try Linear Solver/Type = MUMPS, or a Stress block of MUMPS or KLU2.");
 }

@@ -6,9 +6,10 @@
 //   P = diag(S_σ, 2μ M_u, 2μ M_θ),   S_σ = A + (2μ)⁻¹ B_uᵀ M_u⁻¹ B_u,
 //
 // taken from the operator actually solved: S_σ = K_σσ + K_σu (2μ M_u)⁻¹ K_uσ, so replaced contact
-// rows are in S_σ as docs/theory.md §"Linear solvers" asks (rebuilt at every setOperator). With the physical scaling D of
-// LinearSolver the blocks are formed in the scaled system (D P D). M_u⁻¹ is exact (element blocks
-// inverted); the θ block is diag(2μ M_θ). S_σ⁻¹ is applied by the "Stress block" sub-solver:
+// rows are in S_σ as docs/theory.md §"Linear solvers" asks (rebuilt at every setOperator). With the
+// physical scaling D of LinearSolver the blocks are formed in the scaled system (D P D). M_u⁻¹ is
+// exact (element blocks inverted); the θ block is diag(2μ M_θ). S_σ⁻¹ is applied by the "Stress
+// block" sub-solver:
 //   - MUMPS or KLU2: exact (robust in h and λ; the cost of a direct solve of the σ block, which
 //     is SPD and smaller than the saddle-point system);
 //   - Multigrid: one symmetric V(1,1) cycle of geometric multigrid on the nested hierarchy of
@@ -39,8 +40,8 @@ struct IterativeOptions {
   std::string method;  ///< Auto (MINRES if symmetric, else GMRES), MINRES, GMRES
   double tolerance;
   int maxIterations;
-  int restart;          ///< GMRES Krylov subspace size
-  int outputFrequency;  ///< print the residual every n iterations (0: never)
+  int restart;              ///< GMRES Krylov subspace size
+  int outputFrequency;      ///< print the residual every n iterations (0: never)
   std::string stressBlock;  ///< MUMPS, KLU2, Multigrid, MueLu
   /// Stress block = Multigrid: Chebyshev degree of the patch smoother (0: 2 in 2D, 3 in 3D) and
   /// the ratio λ_max/λ_min of the smoothed part of the spectrum of B A.

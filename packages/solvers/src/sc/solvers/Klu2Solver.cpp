@@ -27,12 +27,12 @@
 namespace sc::solvers {
 
 struct Klu2Solver::Impl {
-  Teuchos::RCP<const Teuchos::Comm<int>> comm;     // the operator's communicator
-  Teuchos::RCP<const Map> rootMap;                 // every row on rank 0 (distributed comm)
-  Teuchos::RCP<const Tpetra::Import<>> toRoot;     // row map -> root map
-  Teuchos::RCP<const Tpetra::Import<>> fromRoot;   // root map -> domain map
-  Teuchos::RCP<const Map> serialMap;               // 0..N-1 on MPI_COMM_SELF (rank 0 only)
-  Teuchos::RCP<const CrsMatrix> serialMatrix;      // rank 0 only
+  Teuchos::RCP<const Teuchos::Comm<int>> comm;    // the operator's communicator
+  Teuchos::RCP<const Map> rootMap;                // every row on rank 0 (distributed comm)
+  Teuchos::RCP<const Tpetra::Import<>> toRoot;    // row map -> root map
+  Teuchos::RCP<const Tpetra::Import<>> fromRoot;  // root map -> domain map
+  Teuchos::RCP<const Map> serialMap;              // 0..N-1 on MPI_COMM_SELF (rank 0 only)
+  Teuchos::RCP<const CrsMatrix> serialMatrix;     // rank 0 only
   Teuchos::RCP<Amesos2::Solver<CrsMatrix, MultiVector>> solver;  // rank 0 only
   long long indexBase = 0;
 
@@ -69,8 +69,8 @@ void onRoot(const Teuchos::Comm<int>& comm, const std::string& phase, F f)
 void Klu2Solver::Impl::gatherMatrix(const CrsMatrix& A)
 {
   // All rows to rank 0 (collective), then a serial copy with columns 0..N-1 sorted in each row.
-  const auto rooted = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(
-      Teuchos::rcpFromRef(A), *toRoot, rootMap, rootMap);
+  const auto rooted = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(Teuchos::rcpFromRef(A),
+                                                                        *toRoot, rootMap, rootMap);
   if (!isRoot()) return;
   const auto lcl = rooted->getLocalMatrixHost();
   const auto colMap = rooted->getColMap();
@@ -117,8 +117,7 @@ void Klu2Solver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A)
               sc::core::InputError,
               "KLU2: the system has " << N << " rows, more than KLU2's int index limit");
   m.indexBase = A->getRowMap()->getMinAllGlobalIndex();
-  SC_THROW_IF(A->getRowMap()->getMaxAllGlobalIndex() - m.indexBase + 1 !=
-                  static_cast<long long>(N),
+  SC_THROW_IF(A->getRowMap()->getMaxAllGlobalIndex() - m.indexBase + 1 != static_cast<long long>(N),
               sc::core::InternalError,
               "KLU2: the row map must hold the global indices " << m.indexBase << ".."
                                                                 << m.indexBase + N - 1);

@@ -14,10 +14,10 @@
 
 namespace sc::solvers {
 
-bool LinearSolver::estimateError(const MultiVector& b, const MultiVector& x, MultiVector& error) const
+bool LinearSolver::estimateError(const MultiVector& b, const MultiVector& x,
+                                 MultiVector& error) const
 {
-  if (working_.is_null())
-    return false;
+  if (working_.is_null()) return false;
   // The working system's residual r̃ = D (b − A x) = D b − (D A D)(D⁻¹ x); error = D P̃⁻¹ r̃.
   MultiVector r(b, Teuchos::Copy);
   A_->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
@@ -25,8 +25,7 @@ bool LinearSolver::estimateError(const MultiVector& b, const MultiVector& x, Mul
     for (size_t j = 0; j < r.getNumVectors(); ++j)
       r.getVectorNonConst(j)->elementWiseMultiply(1.0, *D_, *r.getVector(j), 0.0);
   MultiVector z(x.getMap(), x.getNumVectors());
-  if (!applyPreconditioner(r, z))
-    return false;
+  if (!applyPreconditioner(r, z)) return false;
   if (!D_.is_null())
     for (size_t j = 0; j < z.getNumVectors(); ++j)
       z.getVectorNonConst(j)->elementWiseMultiply(1.0, *D_, *z.getVector(j), 0.0);
@@ -34,7 +33,8 @@ bool LinearSolver::estimateError(const MultiVector& b, const MultiVector& x, Mul
   return true;
 }
 
-Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source, const Teuchos::RCP<CrsMatrix>& reuse)
+Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source,
+                                         const Teuchos::RCP<CrsMatrix>& reuse)
 {
   SC_THROW_IF(reuse.get() == &source, sc::core::InternalError,
               "copyMatrixValues: the target is the source");
@@ -118,13 +118,12 @@ void LinearSolver::solve(const MultiVector& b, MultiVector& x)
   SC_THROW_IF(!std::isfinite(worst), sc::core::ConvergenceError,
               name() << " solver: the solution is not finite (singular or badly scaled matrix of "
                      << A_->getGlobalNumRows() << " rows)");
-  SC_THROW_IF(maxRelativeResidual_ > 0.0 && worst > maxRelativeResidual_,
-              sc::core::ConvergenceError,
-              name() << " solver: relative residual ‖b − A x‖/‖b‖ = " << worst
-                     << " exceeds Linear Solver/Maximum relative residual = "
-                     << maxRelativeResidual_
-                     << " (singular or nearly singular matrix, or an operator declared symmetric "
-                        "that is not?)");
+  SC_THROW_IF(
+      maxRelativeResidual_ > 0.0 && worst > maxRelativeResidual_, sc::core::ConvergenceError,
+      name() << " solver: relative residual ‖b − A x‖/‖b‖ = " << worst
+             << " exceeds Linear Solver/Maximum relative residual = " << maxRelativeResidual_
+             << " (singular or nearly singular matrix, or an operator declared symmetric "
+                "that is not?)");
   if (!D_.is_null())
     for (size_t j = 0; j < m; ++j)
       x.getVectorNonConst(j)->elementWiseMultiply(1.0, *D_, *y->getVector(j), 0.0);

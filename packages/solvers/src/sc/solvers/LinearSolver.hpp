@@ -42,7 +42,8 @@ struct MultigridLevel {
   /// each level; row map = this level's owned σ DOFs in the order of the operator's row map on
   /// the finest level); null on the coarsest level.
   Teuchos::RCP<const CrsMatrix> prolongation;
-  /// σ DOF ids of the smoother patches (vertex stars in 2D, edge stars in 3D) this rank smooths on this level (unused on the coarsest).
+  /// σ DOF ids of the smoother patches (vertex stars in 2D, edge stars in 3D) this rank smooths on
+  /// this level (unused on the coarsest).
   std::vector<std::vector<long long>> patches;
   /// For each element E of the next coarser level that this rank handles (the owner of its
   /// lowest-numbered fine element): the σ DOF ids of the fine elements inside E, split into
@@ -120,7 +121,8 @@ public:
 
   /// Krylov solvers: the relative residual ‖b − A x‖/‖b‖ a solve reaches (`Linear
   /// Solver/Iterative/Tolerance` until set here); direct solvers have none (0) and ignore the
-  /// setter. The contact Newton's balanced stopping changes it per solve (contact/BalancedStopping.hpp).
+  /// setter. The contact Newton's balanced stopping changes it per solve
+  /// (contact/BalancedStopping.hpp).
   virtual double relativeTolerance() const { return 0.0; }
   virtual void setRelativeTolerance(double /*tolerance*/) {}
 
@@ -145,7 +147,10 @@ protected:
   virtual void solveOperator(const MultiVector& b, MultiVector& x) = 0;
 
   /// z = P⁻¹ r with the preconditioner of the working system (false: the solver has none).
-  virtual bool applyPreconditioner(const MultiVector& /*r*/, MultiVector& /*z*/) const { return false; }
+  virtual bool applyPreconditioner(const MultiVector& /*r*/, MultiVector& /*z*/) const
+  {
+    return false;
+  }
 
   /// The operator passed to operatorChanged (null before the first setOperator).
   const Teuchos::RCP<const CrsMatrix>& workingOperator() const { return working_; }
@@ -170,6 +175,7 @@ private:
 /// A copy of `source`'s values on its graph: written into `reuse` when that matrix shares the
 /// graph (no allocation: the Newton steps of a contact solve change values, not the graph),
 /// otherwise a new copy. `reuse` may be null; it must not be `source` itself.
-Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source, const Teuchos::RCP<CrsMatrix>& reuse);
+Teuchos::RCP<CrsMatrix> copyMatrixValues(const CrsMatrix& source,
+                                         const Teuchos::RCP<CrsMatrix>& reuse);
 
 }  // namespace sc::solvers

@@ -20,8 +20,8 @@ namespace {
 const std::vector<std::string>& orderingNames()
 {
   // index = ICNTL(7) value; 1 (user-given) is not offered
-  static const std::vector<std::string> names = {"AMD", "", "AMF", "SCOTCH", "PORD",
-                                                 "METIS", "QAMD", "Auto"};
+  static const std::vector<std::string> names = {"AMD",  "",      "AMF",  "SCOTCH",
+                                                 "PORD", "METIS", "QAMD", "Auto"};
   return names;
 }
 
@@ -73,7 +73,8 @@ const std::vector<std::pair<std::string, Builder>>& registry()
 std::vector<std::string> LinearSolverFactory::knownTypes()
 {
   std::vector<std::string> names;
-  for (const auto& t : registry()) names.push_back(t.first);
+  for (const auto& t : registry())
+    names.push_back(t.first);
   names.push_back("Auto");  // resolved to one of the above by resolveAutoType
   return names;
 }
@@ -84,7 +85,8 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
     using namespace sc::core;
     auto pl = Teuchos::rcp(new Teuchos::ParameterList("Linear Solver"));
     declareChoice(*pl, "Type", "MUMPS", knownTypes(),
-                  "Solver for the saddle-point system (docs/theory.md §\"Linear solvers\"): KLU2 (Amesos2; gathers the "
+                  "Solver for the saddle-point system (docs/theory.md §\"Linear solvers\"): KLU2 "
+                  "(Amesos2; gathers the "
                   "matrix on rank 0, serial LU), MUMPS (parallel multifrontal LU/LDLᵀ) or "
                   "Iterative (Belos MINRES/GMRES with the block-diagonal preconditioner, see the "
                   "Iterative sublist; docs/solvers.md), or Auto: MUMPS, except for 3D systems "
@@ -100,12 +102,14 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                 "Exploit symmetry when the system is symmetric (elasticity without contact rows; "
                 "the application knows which systems are): MUMPS factorises LDLᵀ (SYM = 2), about "
                 "half the work and memory, and Iterative uses MINRES. false: always LU / GMRES. "
-                "Systems with contact rows are non-symmetric (docs/theory.md §\"Contact and friction\") and always use LU / "
+                "Systems with contact rows are non-symmetric (docs/theory.md §\"Contact and "
+                "friction\") and always use LU / "
                 "GMRES. KLU2 ignores it.");
-    declareBool(*pl, "Equilibrate", true,
-                "Scale rows and columns (Ruiz, powers of two; symmetric if Symmetric = true) before "
-                "factorising: the stress, displacement and rotation blocks differ by orders of "
-                "magnitude (docs/theory.md §\"Contact and friction\").");
+    declareBool(
+        *pl, "Equilibrate", true,
+        "Scale rows and columns (Ruiz, powers of two; symmetric if Symmetric = true) before "
+        "factorising: the stress, displacement and rotation blocks differ by orders of "
+        "magnitude (docs/theory.md §\"Contact and friction\").");
     declareInt(*pl, "Equilibration iterations", 20,
                "Maximum Ruiz sweeps; they stop earlier when every row and column ∞-norm is within "
                "0.1 of 1.",
@@ -123,10 +127,11 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                   "Belos method: MINRES (symmetric systems, SPD preconditioner), GMRES, or Auto "
                   "(MINRES when the system is symmetric and Symmetric = true, GMRES otherwise, "
                   "e.g. with contact rows).");
-    declareReal(il, "Tolerance", 1e-8,
-                "Relative residual ‖b − A x‖/‖b‖ of the scaled system to reach (checked on the true "
-                "residual, not only Belos' own).",
-                0.0, false, 1.0, false);
+    declareReal(
+        il, "Tolerance", 1e-8,
+        "Relative residual ‖b − A x‖/‖b‖ of the scaled system to reach (checked on the true "
+        "residual, not only Belos' own).",
+        0.0, false, 1.0, false);
     declareInt(il, "Maximum iterations", 1000,
                "Krylov iterations per solve (all restarts); reaching it without the tolerance is "
                "an error naming the residual reached.",
@@ -134,16 +139,19 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
     declareInt(il, "Restart", 300, "GMRES: Krylov subspace size before a restart.", 1, 100000);
     declareInt(il, "Output frequency", 0,
                "Print Belos' residual every this many iterations (0: never).", 0, 1000000);
-    declareChoice(il, "Stress block", "MUMPS", IterativeSolver::stressBlockSolvers(),
-                  "Solver of the stress block S_σ = A + (2μ)⁻¹B_uᵀM_u⁻¹B_u of the block-diagonal "
-                  "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §\"Linear solvers\"): MUMPS or KLU2 (exact: "
-                  "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
-                  "block); Multigrid (one geometric V-cycle with vertex-patch (2D) or edge-patch (3D) "
-                  "smoothers on the hierarchy of the run's nested meshes, which the application "
-                  "keeps, levels chosen per adaptive cycle; with contact in 2D at degree 1, "
-                  "docs/solvers.md \"Contact with the stress multigrid\"); or MueLu (smoothed aggregation AMG, one V-cycle: not robust, "
-                  "the kernel of div; offered for comparison). SuperLU is not in Debian's "
-                  "Trilinos.");
+    declareChoice(
+        il, "Stress block", "MUMPS", IterativeSolver::stressBlockSolvers(),
+        "Solver of the stress block S_σ = A + (2μ)⁻¹B_uᵀM_u⁻¹B_u of the block-diagonal "
+        "preconditioner diag(S_σ, 2μM_u, 2μM_θ) (docs/theory.md §\"Linear solvers\"): MUMPS or "
+        "KLU2 (exact: "
+        "iterations independent of h and λ, the cost of a direct solve of the SPD σ "
+        "block); Multigrid (one geometric V-cycle with vertex-patch (2D) or edge-patch (3D) "
+        "smoothers on the hierarchy of the run's nested meshes, which the application "
+        "keeps, levels chosen per adaptive cycle; with contact in 2D at degree 1, "
+        "docs/solvers.md \"Contact with the stress multigrid\"); or MueLu (smoothed aggregation "
+        "AMG, one V-cycle: not robust, "
+        "the kernel of div; offered for comparison). SuperLU is not in Debian's "
+        "Trilinos.");
     declareInt(il, "Multigrid smoother degree", 0,
                "Stress block = Multigrid: degree of the Chebyshev polynomial of the patch "
                "smoother, applied before and after the coarse correction on every level; 0: 2 in "
@@ -153,7 +161,9 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                 "Stress block = Multigrid: the Chebyshev smoother damps the spectrum of B A in "
                 "[λ_max/ratio, λ_max] (B the patch smoother, λ_max from power iteration).",
                 1.0, true, 1e6, false);
-    auto& mp = pl->sublist("MUMPS", false, "Options of the MUMPS solver (used when Type = MUMPS, or as the Iterative stress block).");
+    auto& mp = pl->sublist(
+        "MUMPS", false,
+        "Options of the MUMPS solver (used when Type = MUMPS, or as the Iterative stress block).");
     declareInt(mp, "Memory relaxation percent", 30,
                "ICNTL(14): workspace added to the analysis estimate, in percent. Pivoting in "
                "indefinite systems can need more; see Workspace retries.",
@@ -179,7 +189,8 @@ Teuchos::ParameterList LinearSolverFactory::validate(const Teuchos::ParameterLis
     const auto type = list.get<std::string>("Type");
     if (std::find(types.begin(), types.end(), type) == types.end()) {
       std::ostringstream known;
-      for (size_t i = 0; i < types.size(); ++i) known << (i ? ", " : "") << types[i];
+      for (size_t i = 0; i < types.size(); ++i)
+        known << (i ? ", " : "") << types[i];
       const std::string near = sc::core::closestMatch(type, types);
       throw sc::core::InputError("Linear Solver/Type = \"" + type +
                                  "\" is not a known solver type; known types: " + known.str() +
@@ -219,14 +230,12 @@ Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& validatedLi
                                        const ProblemSize& problem)
 {
   Teuchos::ParameterList pl(validatedList);
-  if (pl.get<std::string>("Type") != "Auto")
-    return pl;
+  if (pl.get<std::string>("Type") != "Auto") return pl;
   const int threshold = pl.get<int>("Auto iterative unknowns");
-  const bool iterative = problem.dimension == 3 && !problem.contact && problem.hierarchy &&
-                         problem.dofs >= threshold;
+  const bool iterative =
+      problem.dimension == 3 && !problem.contact && problem.hierarchy && problem.dofs >= threshold;
   pl.set("Type", std::string(iterative ? "Iterative" : "MUMPS"));
-  if (iterative)
-    pl.sublist("Iterative").set("Stress block", std::string("Multigrid"));
+  if (iterative) pl.sublist("Iterative").set("Stress block", std::string("Multigrid"));
   return pl;
 }
 
@@ -242,12 +251,14 @@ Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& line
   return createDirectSolverFromValidated(LinearSolverFactory::validate(linearSolverList));
 }
 
-Teuchos::RCP<DirectSolver> createDirectSolverFromValidated(const Teuchos::ParameterList& linearSolverList)
+Teuchos::RCP<DirectSolver>
+createDirectSolverFromValidated(const Teuchos::ParameterList& linearSolverList)
 {
-  auto direct = Teuchos::rcp_dynamic_cast<DirectSolver>(LinearSolverFactory::create(linearSolverList));
+  auto direct =
+      Teuchos::rcp_dynamic_cast<DirectSolver>(LinearSolverFactory::create(linearSolverList));
   SC_THROW_IF(direct.is_null(), sc::core::InputError,
               "Linear Solver/Type = \"" << linearSolverList.get<std::string>("Type")
-                  << "\" is not a direct solver here; use KLU2 or MUMPS");
+                                        << "\" is not a direct solver here; use KLU2 or MUMPS");
   return direct;
 }
 

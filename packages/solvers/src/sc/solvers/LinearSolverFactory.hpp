@@ -40,15 +40,16 @@ public:
 /// What `Type = Auto` looks at (docs/solvers.md, "Type = Auto").
 struct ProblemSize {
   int dimension = 2;
-  long long dofs = 0;       ///< global unknowns of the system
+  long long dofs = 0;  ///< global unknowns of the system
   int ranks = 1;
-  bool contact = false;     ///< contact rows (the stress multigrid is not available with them)
-  bool hierarchy = false;   ///< the caller provides BlockStructure::multigrid (nested meshes)
+  bool contact = false;    ///< contact rows (the stress multigrid is not available with them)
+  bool hierarchy = false;  ///< the caller provides BlockStructure::multigrid (nested meshes)
 };
 
 /// `Type = Auto`: MUMPS, except in 3D without contact, with a mesh hierarchy and at least
-/// `Auto iterative unknowns` (default kAutoIterativeDofs3D) unknowns, where MUMPS' memory (~N^{4/3}) exceeds one 24 GB node: there
-/// Iterative with Stress block = Multigrid (memory ~N). Measured in docs/solvers.md.
+/// `Auto iterative unknowns` (default kAutoIterativeDofs3D) unknowns, where MUMPS' memory
+/// (~N^{4/3}) exceeds one 24 GB node: there Iterative with Stress block = Multigrid (memory ~N).
+/// Measured in docs/solvers.md.
 constexpr long long kAutoIterativeDofs3D = 1500000;
 /// The list to build for `problem`: the validated list itself unless its Type is Auto, else a
 /// copy with Type = MUMPS or Type = Iterative and Iterative/Stress block = Multigrid, by the rule
@@ -67,6 +68,7 @@ Teuchos::RCP<LinearSolver> createLinearSolver(const Teuchos::ParameterList& line
 Teuchos::RCP<DirectSolver> createDirectSolver(const Teuchos::ParameterList& linearSolverList);
 /// The same for a list validated already (the Krylov solver's stress-block and coarse solvers:
 /// its own validated list with the direct Type).
-Teuchos::RCP<DirectSolver> createDirectSolverFromValidated(const Teuchos::ParameterList& validatedList);
+Teuchos::RCP<DirectSolver>
+createDirectSolverFromValidated(const Teuchos::ParameterList& validatedList);
 
 }  // namespace sc::solvers

@@ -39,9 +39,9 @@ struct MumpsSolver::Impl {
   // Centralised right-hand side / solution on rank 0.
   long long firstGid = 0;
   MUMPS_INT n = 0;
-  Teuchos::RCP<const Map> hostMap;                     // all N indices on rank 0
-  Teuchos::RCP<const Tpetra::Import<>> gather;         // range map -> host map
-  Teuchos::RCP<const Tpetra::Import<>> scatter;        // host map -> domain map
+  Teuchos::RCP<const Map> hostMap;               // all N indices on rank 0
+  Teuchos::RCP<const Tpetra::Import<>> gather;   // range map -> host map
+  Teuchos::RCP<const Tpetra::Import<>> scatter;  // host map -> domain map
   std::vector<double> rhs;
 
   void call(int job)
@@ -78,8 +78,8 @@ void checkInfo(const DMUMPS_STRUC_C& id, int job)
 {
   const int code = id.INFOG(1);
   SC_THROW_IF(code < 0, sc::core::Error,
-              "MUMPS " << phaseName(job) << " failed: INFOG(1) = " << code << ", INFOG(2) = "
-                       << id.INFOG(2) << ": " << MumpsSolver::errorMeaning(code)
+              "MUMPS " << phaseName(job) << " failed: INFOG(1) = " << code
+                       << ", INFOG(2) = " << id.INFOG(2) << ": " << MumpsSolver::errorMeaning(code)
                        << " (N = " << id.n << ", SYM = " << id.sym << ")");
 }
 
@@ -94,8 +94,11 @@ std::string MumpsSolver::errorMeaning(int infog1)
   case -5:
   case -7: return "memory allocation failed during analysis";
   case -6: return "the matrix is structurally singular (INFOG(2) = structural rank)";
-  case -8: return "integer workspace too small for factorisation: increase MUMPS/Memory relaxation percent";
-  case -9: return "real workspace too small for factorisation: increase MUMPS/Memory relaxation percent";
+  case -8:
+    return "integer workspace too small for factorisation: increase MUMPS/Memory relaxation "
+           "percent";
+  case -9:
+    return "real workspace too small for factorisation: increase MUMPS/Memory relaxation percent";
   case -10: return "the matrix is numerically singular";
   case -11: return "real workspace too small for the solve";
   case -12: return "real workspace too small for iterative refinement";
@@ -114,7 +117,7 @@ std::string MumpsSolver::errorMeaning(int infog1)
 }
 
 MumpsSolver::MumpsSolver(const MumpsOptions& options)
-  : impl_(std::make_unique<Impl>()), options_(options)
+    : impl_(std::make_unique<Impl>()), options_(options)
 {
 }
 
@@ -145,9 +148,8 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
   const long long firstGid = rowMap->getMinAllGlobalIndex();
   SC_THROW_IF(rowMap->getMaxAllGlobalIndex() - firstGid + 1 != nGlobal || !rowMap->isOneToOne(),
               sc::core::InternalError,
-              "MUMPS: the row map must own the global indices " << firstGid << ".."
-                                                                << firstGid + nGlobal - 1
-                                                                << " once each");
+              "MUMPS: the row map must own the global indices "
+                  << firstGid << ".." << firstGid + nGlobal - 1 << " once each");
   SC_THROW_IF(!A->getRangeMap()->isSameAs(*rowMap), sc::core::InternalError,
               "MUMPS: the range map must equal the row map");
 
@@ -183,7 +185,7 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
     id.ICNTL(3) = -1;
     id.ICNTL(4) = 0;
   }
-  id.ICNTL(5) = 0;   // assembled matrix
+  id.ICNTL(5) = 0;  // assembled matrix
   id.ICNTL(7) = options_.ordering;
   id.ICNTL(14) = options_.memoryRelaxationPercent;
   id.ICNTL(18) = 3;  // distributed assembled matrix: structure at analysis, values at factorisation
@@ -213,7 +215,8 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
     }
   }
   m.values.resize(m.entryPosition.size());
-  for (size_t e = 0; e < m.entryPosition.size(); ++e) m.values[e] = lclA.values(m.entryPosition[e]);
+  for (size_t e = 0; e < m.entryPosition.size(); ++e)
+    m.values[e] = lclA.values(m.entryPosition[e]);
 
   m.n = static_cast<MUMPS_INT>(nGlobal);
   m.firstGid = firstGid;
@@ -226,8 +229,8 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
 
   // --- gather/scatter plans for the centralised right-hand side and solution
   const Tpetra::global_size_t nG = static_cast<Tpetra::global_size_t>(nGlobal);
-  m.hostMap = Teuchos::rcp(new Map(nG, m.rank == 0 ? static_cast<size_t>(nGlobal) : 0,
-                                   firstGid, comm));
+  m.hostMap =
+      Teuchos::rcp(new Map(nG, m.rank == 0 ? static_cast<size_t>(nGlobal) : 0, firstGid, comm));
   m.gather = Teuchos::rcp(new Tpetra::Import<>(A->getRangeMap(), m.hostMap));
   m.scatter = Teuchos::rcp(new Tpetra::Import<>(m.hostMap, A->getDomainMap()));
 
@@ -245,7 +248,8 @@ void MumpsSolver::doNumericFactorization(const Teuchos::RCP<const CrsMatrix>& A)
   SC_THROW_IF(static_cast<size_t>(lclA.values.extent(0)) <
                   (m.entryPosition.empty() ? 0 : m.entryPosition.back() + 1),
               sc::core::InternalError, "MUMPS: the matrix has fewer entries than at the analysis");
-  for (size_t e = 0; e < m.entryPosition.size(); ++e) m.values[e] = lclA.values(m.entryPosition[e]);
+  for (size_t e = 0; e < m.entryPosition.size(); ++e)
+    m.values[e] = lclA.values(m.entryPosition[e]);
   id.a_loc = m.values.data();
 
   for (int attempt = 0;; ++attempt) {
@@ -289,7 +293,8 @@ void MumpsSolver::doSolve(const MultiVector& b, MultiVector& x)
   if (m.rank == 0) {
     for (size_t j = 0; j < nrhs; ++j) {
       auto col = onHost.getDataNonConst(j);
-      for (MUMPS_INT i = 0; i < m.n; ++i) col[i] = m.rhs[j * static_cast<size_t>(m.n) + i];
+      for (MUMPS_INT i = 0; i < m.n; ++i)
+        col[i] = m.rhs[j * static_cast<size_t>(m.n) + i];
     }
   }
   x.doImport(onHost, *m.scatter, Tpetra::INSERT);

@@ -18,8 +18,8 @@ namespace sc::solvers {
 struct MumpsOptions {
   int memoryRelaxationPercent{};  ///< ICNTL(14): extra workspace over the analysis estimate
   int workspaceRetries{};         ///< on INFOG(1) = -8/-9: retry with ICNTL(14) doubled
-  int ordering{};                 ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
-  bool verbose{};                 ///< MUMPS diagnostics on stdout (ICNTL(1..4))
+  int ordering{};  ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
+  bool verbose{};  ///< MUMPS diagnostics on stdout (ICNTL(1..4))
 };
 
 class MumpsSolver : public DirectSolver {

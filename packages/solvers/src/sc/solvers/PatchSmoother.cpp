@@ -24,7 +24,7 @@ static_assert(std::is_same_v<LO, int>, "PatchSmoother keeps local ids as int");
 
 PatchSmoother::PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<long long>>& patches,
                              bool symmetric)
-  : rowMap_(A.getRowMap()), symmetric_(symmetric)
+    : rowMap_(A.getRowMap()), symmetric_(symmetric)
 {
   std::vector<GO> ov;
   for (const auto& p : patches)
@@ -46,8 +46,7 @@ PatchSmoother::PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<l
   }
   factors_.reserve(total);
   lids_.reserve(lids);
-  if (!symmetric)
-    pivots_.reserve(lids);
+  if (!symmetric) pivots_.reserve(lids);
   Teuchos::LAPACK<int, double> lapack;
   std::vector<double> dense;
   std::vector<int> ipiv;
@@ -55,14 +54,12 @@ PatchSmoother::PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<l
   std::vector<int> position(colMap.getNodeNumElements(), -1);
   for (const auto& p : patches) {
     const int m = static_cast<int>(p.size());
-    if (m == 0)
-      continue;
+    if (m == 0) continue;
     sizes_.push_back(m);
     for (int a = 0; a < m; ++a) {
       lids_.push_back(overlapMap_->getLocalElement(p[a]));
       const LO c = colMap.getLocalElement(p[a]);
-      if (c != Teuchos::OrdinalTraits<LO>::invalid())
-        position[c] = a;
+      if (c != Teuchos::OrdinalTraits<LO>::invalid()) position[c] = a;
     }
     dense.assign(static_cast<std::size_t>(m) * m, 0.0);
     for (int a = 0; a < m; ++a) {
@@ -75,21 +72,20 @@ PatchSmoother::PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<l
     }
     for (int a = 0; a < m; ++a) {
       const LO c = colMap.getLocalElement(p[a]);
-      if (c != Teuchos::OrdinalTraits<LO>::invalid())
-        position[c] = -1;
+      if (c != Teuchos::OrdinalTraits<LO>::invalid()) position[c] = -1;
     }
     int info = 0;
     if (symmetric) {
       lapack.POTRF('L', m, dense.data(), m, &info);
       SC_THROW_IF(info != 0, sc::core::ConvergenceError,
                   "stress multigrid: a patch block is not positive definite (LAPACK potrf "
-                  "info " << info << ")");
+                  "info "
+                      << info << ")");
     } else {
       ipiv.resize(m);
       lapack.GETRF(m, m, dense.data(), m, ipiv.data(), &info);
       SC_THROW_IF(info != 0, sc::core::ConvergenceError,
-                  "stress multigrid: a patch block is singular (LAPACK getrf info " << info
-                                                                                   << ")");
+                  "stress multigrid: a patch block is singular (LAPACK getrf info " << info << ")");
       pivots_.insert(pivots_.end(), ipiv.begin(), ipiv.end());
     }
     factors_.insert(factors_.end(), dense.begin(), dense.end());  // rounded to float

@@ -1,12 +1,13 @@
 #pragma once
-// The additive Schwarz smoother B = Σ_i R_iᵀ A_i⁻¹ R_i of the stress-block multigrid (docs/theory.md
-// §"Linear solvers") over the patches (σ global ids) of this rank, applied matrix-free: each patch
-// block A_i is factorised once by LAPACK in double (Cholesky when symmetric, LU with partial
-// pivoting otherwise) and the factors are kept in single precision (a preconditioner needs no
-// more; it halves the largest memory item); apply() imports the residual onto the union of this
-// rank's patches (rows of patches cut by the partition come from the other ranks), solves with
-// each patch's factors and exports (adds) the corrections to their owners. Memory: Σ_i m_i²
-// floats. (Assembling B as a sparse matrix took more than 5 GB at 262k 3D DOFs with vertex stars.)
+// The additive Schwarz smoother B = Σ_i R_iᵀ A_i⁻¹ R_i of the stress-block multigrid
+// (docs/theory.md §"Linear solvers") over the patches (σ global ids) of this rank, applied
+// matrix-free: each patch block A_i is factorised once by LAPACK in double (Cholesky when
+// symmetric, LU with partial pivoting otherwise) and the factors are kept in single precision (a
+// preconditioner needs no more; it halves the largest memory item); apply() imports the residual
+// onto the union of this rank's patches (rows of patches cut by the partition come from the other
+// ranks), solves with each patch's factors and exports (adds) the corrections to their owners.
+// Memory: Σ_i m_i² floats. (Assembling B as a sparse matrix took more than 5 GB at 262k 3D DOFs
+// with vertex stars.)
 
 #include <vector>
 

@@ -37,7 +37,7 @@ double powerOfTwo(double d) { return std::exp2(std::round(std::log2(d))); }
 }  // namespace
 
 RuizEquilibration::RuizEquilibration(bool symmetric, int maxIterations, double tolerance)
-  : symmetric_(symmetric), maxIterations_(maxIterations), tolerance_(tolerance)
+    : symmetric_(symmetric), maxIterations_(maxIterations), tolerance_(tolerance)
 {
 }
 
@@ -96,8 +96,10 @@ void RuizEquilibration::compute(const CrsMatrix& A)
     {
       auto rn = rowNorm.getData(0);
       auto cn = colNorm.getData(0);
-      for (long i = 0; i < rn.size(); ++i) localDev = std::max(localDev, std::abs(1.0 - rn[i]));
-      for (long i = 0; i < cn.size(); ++i) localDev = std::max(localDev, std::abs(1.0 - cn[i]));
+      for (long i = 0; i < rn.size(); ++i)
+        localDev = std::max(localDev, std::abs(1.0 - rn[i]));
+      for (long i = 0; i < cn.size(); ++i)
+        localDev = std::max(localDev, std::abs(1.0 - cn[i]));
     }
     deviation_ = sc::core::maxOverRanks(*comm, localDev);
     if (deviation_ <= tolerance_) break;
@@ -113,16 +115,20 @@ void RuizEquilibration::compute(const CrsMatrix& A)
         dc[i] = dr[i];
       }
     } else {
-      for (long i = 0; i < dr.size(); ++i) dr[i] /= std::sqrt(rn[i]);
-      for (long i = 0; i < dc.size(); ++i) dc[i] /= std::sqrt(cn[i]);
+      for (long i = 0; i < dr.size(); ++i)
+        dr[i] /= std::sqrt(rn[i]);
+      for (long i = 0; i < dc.size(); ++i)
+        dc[i] /= std::sqrt(cn[i]);
     }
   }
   // Powers of two: the scaling itself then commits no rounding error.
   {
     auto dr = rowScale_->getDataNonConst(0);
     auto dc = colScale_->getDataNonConst(0);
-    for (long i = 0; i < dr.size(); ++i) dr[i] = powerOfTwo(dr[i]);
-    for (long i = 0; i < dc.size(); ++i) dc[i] = powerOfTwo(dc[i]);
+    for (long i = 0; i < dr.size(); ++i)
+      dr[i] = powerOfTwo(dr[i]);
+    for (long i = 0; i < dc.size(); ++i)
+      dc[i] = powerOfTwo(dc[i]);
   }
 }
 

@@ -16,7 +16,7 @@ struct SolveStatistics {
   int numericFactorizations = 0;   ///< numerical factorisations done
   int symbolicReuses = 0;          ///< numerical factorisations that reused an earlier analysis
   int solves = 0;
-  int workspaceRetries = 0;        ///< MUMPS factorisations repeated with a larger ICNTL(14)
+  int workspaceRetries = 0;  ///< MUMPS factorisations repeated with a larger ICNTL(14)
 
   int equilibrationIterations = 0;  ///< Ruiz sweeps of the last equilibration (0: off)
 
@@ -25,9 +25,9 @@ struct SolveStatistics {
   double relativeResidual = 0.0;
 
   // Krylov solvers (-1 / 0 for direct solvers):
-  int iterations = -1;          ///< Krylov iterations of the last solve (all restarts)
-  long long totalIterations = 0;  ///< Krylov iterations since the solver was built
-  int preconditionerSetups = 0;   ///< preconditioner (re)builds since the solver was built
+  int iterations = -1;                 ///< Krylov iterations of the last solve (all restarts)
+  long long totalIterations = 0;       ///< Krylov iterations since the solver was built
+  int preconditionerSetups = 0;        ///< preconditioner (re)builds since the solver was built
   double preconditionerSeconds = 0.0;  ///< wall-clock seconds of the last preconditioner build
 
   /// Entries in the factors (KLU2: nnz(L)+nnz(U); MUMPS: INFOG(29)); -1 if unknown.

@@ -6,7 +6,7 @@
 namespace sc::solvers {
 
 SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Scene& scene)
-  : list_(validatedList), scene_(scene), type_(validatedList.get<std::string>("Type"))
+    : list_(validatedList), scene_(scene), type_(validatedList.get<std::string>("Type"))
 {
   const auto& il = list_.sublist("Iterative");
   const bool iterative = type_ == "Iterative";
@@ -18,8 +18,7 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
   // The Krylov solver with contact rows is verified (against MUMPS: run_hertz2d_iterative, and
   // with Stress block = Multigrid run_hertz2d_multigrid_*) in 2D at degree 1 only; other contact
   // scenes are rejected until a test covers them.
-  SC_THROW_IF(iterative && contact && (scene.dimension != 2 || scene.degree != 1),
-              core::InputError,
+  SC_THROW_IF(iterative && contact && (scene.dimension != 2 || scene.degree != 1), core::InputError,
               "Linear Solver/Type = Iterative with contact is verified only in 2D at "
               "'Discretization/Degree' = 1 (docs/solvers.md); this scene is "
                   << scene.dimension << "D at degree " << scene.degree << ": use MUMPS or KLU2");
@@ -36,8 +35,7 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
 
 std::string SolverPolicy::typeFor(long long dofs) const
 {
-  if (!isAuto())
-    return type_;
+  if (!isAuto()) return type_;
   return resolveAutoType(list_, {scene_.dimension, dofs, scene_.ranks, scene_.contact, hierarchy_})
       .get<std::string>("Type");
 }

@@ -26,8 +26,7 @@ Teuchos::RCP<const Map> ownedStressMap(const disc::MixedElasticitySpace& s,
 {
   std::vector<GO> gids;
   for (long long g : s.ownedDofs())
-    if (g < s.numStressDofs())
-      gids.push_back(g);
+    if (g < s.numStressDofs()) gids.push_back(g);
   return Teuchos::rcp(new Map(s.numStressDofs(), Teuchos::ArrayView<const GO>(gids), 0, comm));
 }
 
@@ -48,8 +47,7 @@ std::vector<MultigridLevel::CoarseElement> coarseElementDofs(const disc::MixedEl
   const int d = fine.dim(), nRT = fine.stressBasisSize(), ne = m.numElements();
   std::vector<int> first(coarseElements, -1);
   for (int e = 0; e < ne; ++e)
-    if (first[parent[e]] < 0)
-      first[parent[e]] = e;
+    if (first[parent[e]] < 0) first[parent[e]] = e;
   std::vector<int> slot(coarseElements, -1);
   std::vector<MultigridLevel::CoarseElement> out;
   for (int c = 0; c < coarseElements; ++c)
@@ -60,8 +58,7 @@ std::vector<MultigridLevel::CoarseElement> coarseElementDofs(const disc::MixedEl
   std::vector<char> onBoundary(nRT);
   for (int e = 0; e < ne; ++e) {
     const int s = slot[parent[e]];
-    if (s < 0)
-      continue;
+    if (s < 0) continue;
     std::fill(onBoundary.begin(), onBoundary.end(), 0);
     for (int lf = 0; lf <= d; ++lf) {
       const auto fe = m.faceElements(m.elementFaces(e)[lf]);
@@ -102,7 +99,8 @@ Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coa
   auto P = Teuchos::rcp(new CrsMatrix(rowMap, nRT));
   std::vector<char> done(fine.numStressDofs(), 0);
   disc::ElementValues evF(fine, 2 * k + 2), evC(coarse, 2 * k + 2);
-  std::vector<double> pts, G(static_cast<std::size_t>(nRT) * nRT), C(static_cast<std::size_t>(nRT) * nRT);
+  std::vector<double> pts, G(static_cast<std::size_t>(nRT) * nRT),
+      C(static_cast<std::size_t>(nRT) * nRT);
   std::vector<int> ipiv(nRT);
   Teuchos::LAPACK<int, double> lapack;
   for (int f = 0; f < fm.numElements(); ++f) {
@@ -113,8 +111,7 @@ Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coa
         const long long g = fd[fine.stressOffset(i) + a];
         needed = !done[g] && fine.dofOwner(g) == rank;
       }
-    if (!needed)
-      continue;
+    if (!needed) continue;
     evF.reinit(f);
     const int nq = evF.numPoints();
     pts.assign(evF.point(0), evF.point(0) + 3 * nq);
@@ -138,7 +135,8 @@ Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coa
     int info = 0;
     lapack.GESV(nRT, nRT, G.data(), nRT, ipiv.data(), C.data(), nRT, &info);
     SC_THROW_IF(info != 0, core::InternalError,
-                "stressProlongation: singular RT mass on element " << f << " (info " << info << ")");
+                "stressProlongation: singular RT mass on element " << f << " (info " << info
+                                                                   << ")");
     const long long* cd = coarse.elementDofs(parent[f]);
     double scale = 0.0;
     for (double v : C)
@@ -146,8 +144,7 @@ Teuchos::RCP<CrsMatrix> stressProlongation(const disc::MixedElasticitySpace& coa
     for (int i = 0; i < d; ++i)
       for (int a = 0; a < nRT; ++a) {
         const long long g = fd[fine.stressOffset(i) + a];
-        if (done[g] || fine.dofOwner(g) != rank)
-          continue;
+        if (done[g] || fine.dofOwner(g) != rank) continue;
         done[g] = 1;
         std::vector<GO> cols;
         std::vector<double> vals;
@@ -208,15 +205,13 @@ std::vector<std::vector<long long>> stressPatches(const disc::MixedElasticitySpa
     while (end < inc.size() && inc[end].key == inc[begin].key)
       ++end;
     // the owner of the lowest-numbered element of the star smooths it (sorted by element)
-    if (elementOwner(space, inc[begin].element) != space.rank())
-      continue;
+    if (elementOwner(space, inc[begin].element) != space.rank()) continue;
     std::vector<long long> p;
     for (std::size_t s = begin; s < end; ++s) {
       const long long* ed = space.elementDofs(inc[s].element);
       for (int i = 0; i < d; ++i) {
         for (int a = 0; a < nRT; ++a)
-          if (!onFace[a])
-            p.push_back(ed[space.stressOffset(i) + a]);
+          if (!onFace[a]) p.push_back(ed[space.stressOffset(i) + a]);
         // face lf is opposite local vertex lf: it contains the entity iff lf is not one of its
         // vertices
         for (int lf = 0; lf <= d; ++lf)
@@ -234,7 +229,7 @@ std::vector<std::vector<long long>> stressPatches(const disc::MixedElasticitySpa
 
 StressHierarchy::StressHierarchy(int degree, Teuchos::RCP<const Teuchos::Comm<int>> comm,
                                  double ratio)
-  : degree_(degree), comm_(std::move(comm)), ratio_(ratio)
+    : degree_(degree), comm_(std::move(comm)), ratio_(ratio)
 {
 }
 
@@ -253,8 +248,7 @@ void StressHierarchy::addMesh(Teuchos::RCP<const mesh::SimplexMesh> mesh,
 
 int StressHierarchy::meshElements(int i) const { return meshes_.at(i)->numElements(); }
 
-std::vector<MultigridLevel> StressHierarchy::levels(
-    const disc::MixedElasticitySpace& finest) const
+std::vector<MultigridLevel> StressHierarchy::levels(const disc::MixedElasticitySpace& finest) const
 {
   SC_THROW_IF(meshes_.empty() || &finest.mesh() != meshes_.back().get(), core::InternalError,
               "StressHierarchy::levels: the space is not on the last mesh added");
@@ -287,8 +281,7 @@ std::vector<MultigridLevel> StressHierarchy::levels(
           p = parents_[j][p];
       out[l].prolongation = stressProlongation(*previous, *space, parent, comm_);
       out[l].patches = stressPatches(*space);
-      out[l].coarseElements =
-          coarseElementDofs(*space, parent, previous->mesh().numElements());
+      out[l].coarseElements = coarseElementDofs(*space, parent, previous->mesh().numElements());
     }
     previous = space;
   }

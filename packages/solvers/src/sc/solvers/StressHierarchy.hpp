@@ -43,8 +43,8 @@ std::vector<std::vector<long long>> stressPatches(const disc::MixedElasticitySpa
 /// from which the multigrid levels of the stress block are chosen (docs/solvers.md, "Geometric
 /// multigrid"): the finest mesh, then going coarser a mesh whenever it has at most 1/ratio of the
 /// elements of the last level chosen, the first mesh replacing the coarsest one chosen (a single
-/// level, solved directly, until a mesh has `ratio` times the first one's elements); the parents are
-/// composed over the meshes skipped. So adaptive cycles that add a few elements each still give
+/// level, solved directly, until a mesh has `ratio` times the first one's elements); the parents
+/// are composed over the meshes skipped. So adaptive cycles that add a few elements each still give
 /// a hierarchy whose levels shrink geometrically. All meshes are kept (a few per cent of the
 /// finest level's memory in 2D).
 class StressHierarchy {

@@ -45,8 +45,8 @@ public:
   std::vector<Level> levels;  // coarsest first
   Teuchos::RCP<DirectSolver> coarse;
   int extendedFunctions = 0;  // coarse functions extended into their element (all levels)
-  int degree = 2;       // Chebyshev degree (smoother applications before and after)
-  double ratio = 10.0;  // λ_max / λ_min of the smoothed interval
+  int degree = 2;             // Chebyshev degree (smoother applications before and after)
+  double ratio = 10.0;        // λ_max / λ_min of the smoothed interval
 
   Teuchos::RCP<const Map> getDomainMap() const override { return levels.back().A->getDomainMap(); }
   Teuchos::RCP<const Map> getRangeMap() const override { return levels.back().A->getRangeMap(); }
@@ -87,8 +87,7 @@ public:
     const double theta = 0.5 * (lmax + lmin), delta = 0.5 * (lmax - lmin), sigma = theta / delta;
     double rho = 1.0 / sigma;
     MultiVector r(b, Teuchos::Copy), d(x.getMap(), x.getNumVectors(), false);
-    if (!zero)
-      L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+    if (!zero) L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
     L.B->apply(r, d, 1.0 / theta, 0.0);
     if (zero)
       Tpetra::deep_copy(x, d);
@@ -147,10 +146,10 @@ struct ConstrainedProlongation {
   int extended = 0;                 // functions extended (global)
 };
 
-ConstrainedProlongation constrainProlongation(
-    const CrsMatrix& A, const CrsMatrix& P0, const std::vector<char>& masked,
-    const std::vector<char>& contact,
-    const std::vector<MultigridLevel::CoarseElement>& coarseElements)
+ConstrainedProlongation
+constrainProlongation(const CrsMatrix& A, const CrsMatrix& P0, const std::vector<char>& masked,
+                      const std::vector<char>& contact,
+                      const std::vector<MultigridLevel::CoarseElement>& coarseElements)
 {
   const auto& rowMap = P0.getRowMap();
   const auto& colMap = P0.getColMap();
@@ -171,17 +170,14 @@ ConstrainedProlongation constrainProlongation(
     auto f0 = flagged.getDataNonConst(0), f1 = flagged.getDataNonConst(1),
          f2 = flagged.getDataNonConst(2), f3 = flagged.getDataNonConst(3);
     for (LO i = 0; i < nRows; ++i) {
-      if (!masked[i] && !contact[i])
-        continue;
+      if (!masked[i] && !contact[i]) continue;
       typename CrsMatrix::local_inds_host_view_type inds;
       typename CrsMatrix::values_host_view_type v;
       P0.getLocalRowView(i, inds, v);
       const double tiny = rowThreshold(v);
       for (size_t k = 0; k < inds.extent(0); ++k) {
-        if (v(k) == 0.0)
-          continue;
-        if (masked[i] && !contact[i])
-          f0[inds(k)] = 1.0;
+        if (v(k) == 0.0) continue;
+        if (masked[i] && !contact[i]) f0[inds(k)] = 1.0;
         if (std::abs(v(k)) > tiny && contact[i]) {
           (masked[i] ? f1 : f2)[inds(k)] = 1.0;
           f3[inds(k)] = 1.0;
@@ -203,8 +199,7 @@ ConstrainedProlongation constrainProlongation(
       P0.getLocalRowView(i, inds, v);
       for (size_t k = 0; k < inds.extent(0); ++k) {
         all[inds(k)] = std::max(all[inds(k)], std::abs(v(k)));
-        if (!masked[i])
-          open[inds(k)] = std::max(open[inds(k)], std::abs(v(k)));
+        if (!masked[i]) open[inds(k)] = std::max(open[inds(k)], std::abs(v(k)));
       }
     }
   }
@@ -219,10 +214,10 @@ ConstrainedProlongation constrainProlongation(
     auto kv = keep.getDataNonConst(0);
     out.coarseContact.assign(kv.size(), 0);
     for (LO j = 0; j < static_cast<LO>(kv.size()); ++j) {
-      kv[j] = c0[j] == 0.0 && (c1[j] == 0.0 || c2[j] != 0.0) && lOpen[j] >= 1e-3 * lAll[j] ? 1.0 : 0.0;
+      kv[j] =
+          c0[j] == 0.0 && (c1[j] == 0.0 || c2[j] != 0.0) && lOpen[j] >= 1e-3 * lAll[j] ? 1.0 : 0.0;
       out.coarseContact[j] = c3[j] != 0.0;
-      if (kv[j] != 0.0 && c1[j] != 0.0)
-        cutMine.push_back(domainMap->getGlobalElement(j));
+      if (kv[j] != 0.0 && c1[j] != 0.0) cutMine.push_back(domainMap->getGlobalElement(j));
     }
   }
   Vector keepCols(colMap, false);
@@ -248,8 +243,7 @@ ConstrainedProlongation constrainProlongation(
       }
   };
   for (LO i = 0; i < nRows; ++i)
-    if (!masked[i])
-      addRow(i, i, 1.0);
+    if (!masked[i]) addRow(i, i, 1.0);
   auto build = [&](std::vector<std::vector<GO>>& cs, std::vector<std::vector<double>>& vs) {
     std::vector<size_t> counts(nRows);
     for (LO i = 0; i < nRows; ++i)
@@ -319,8 +313,7 @@ ConstrainedProlongation constrainProlongation(
         M.getLocalRowView(i, inds, v);
         for (size_t k = 0; k < inds.extent(0); ++k) {
           const auto at = column.find(M.getColMap()->getGlobalElement(inds(k)));
-          if (at != column.end())
-            Y.replaceLocalValue(i, at->second, v(k));
+          if (at != column.end()) Y.replaceLocalValue(i, at->second, v(k));
         }
       }
     }
@@ -353,12 +346,10 @@ ConstrainedProlongation constrainProlongation(
           const LO b = boundaryMap->getLocalElement(g);
           lost = lost || (mb[b] != 0.0 && std::abs(xb[b]) >= 0.05 * largest[k]);
         }
-        if (lost)
-          home.push_back(k);
+        if (lost) home.push_back(k);
       }
       const int m = static_cast<int>(c.interior.size());
-      if (home.empty() || m == 0)
-        continue;
+      if (home.empty() || m == 0) continue;
       {
         // The extension depends only on the values on E's boundary: a function whose boundary
         // values are a combination of the others' (two functions of a coarse face that keep the
@@ -393,13 +384,11 @@ ConstrainedProlongation constrainProlongation(
           independent.push_back(k);
         }
         home = independent;
-        if (home.empty())
-          continue;
+        if (home.empty()) continue;
       }
       for (int a = 0; a < m; ++a) {
         const LO col = ovCols.getLocalElement(c.interior[a]);
-        if (col != Teuchos::OrdinalTraits<LO>::invalid())
-          position[col] = a;
+        if (col != Teuchos::OrdinalTraits<LO>::invalid()) position[col] = a;
       }
       dense.assign(static_cast<std::size_t>(m) * m, 0.0);
       for (int a = 0; a < m; ++a) {
@@ -412,35 +401,36 @@ ConstrainedProlongation constrainProlongation(
       }
       for (int a = 0; a < m; ++a) {
         const LO col = ovCols.getLocalElement(c.interior[a]);
-        if (col != Teuchos::OrdinalTraits<LO>::invalid())
-          position[col] = -1;
+        if (col != Teuchos::OrdinalTraits<LO>::invalid()) position[col] = -1;
       }
       const int nh = static_cast<int>(home.size());
       rhs.assign(static_cast<std::size_t>(m) * nh, 0.0);
       for (int h = 0; h < nh; ++h) {
         const auto rv = Rov.getData(home[h]);
         for (int a = 0; a < m; ++a)
-          rhs[static_cast<std::size_t>(h) * m + a] = -rv[interiorMap->getLocalElement(c.interior[a])];
+          rhs[static_cast<std::size_t>(h) * m + a] =
+              -rv[interiorMap->getLocalElement(c.interior[a])];
       }
       pivots.resize(m);
       int info = 0;
       lapack.GETRF(m, m, dense.data(), m, pivots.data(), &info);
       SC_THROW_IF(info != 0, sc::core::ConvergenceError,
                   "stress multigrid: the interior block of a coarse element is singular "
-                  "(LAPACK getrf info " << info << ")");
+                  "(LAPACK getrf info "
+                      << info << ")");
       lapack.GETRS('N', m, nh, dense.data(), m, pivots.data(), rhs.data(), m, &info);
       for (int h = 0; h < nh; ++h) {
         auto cv = Cov.getDataNonConst(home[h]);
         for (int a = 0; a < m; ++a)
-          cv[interiorMap->getLocalElement(c.interior[a])] += rhs[static_cast<std::size_t>(h) * m + a];
+          cv[interiorMap->getLocalElement(c.interior[a])] +=
+              rhs[static_cast<std::size_t>(h) * m + a];
       }
       out.extended += nh;
     }
     std::vector<int> anyDependent(nc, 0);
     core::sumOverRanks(comm, nc, dependent.data(), anyDependent.data());
     for (int k = 0; k < nc; ++k)
-      if (anyDependent[k])
-        droppedGids.push_back(static_cast<GO>(cutAll[begin + k]));
+      if (anyDependent[k]) droppedGids.push_back(static_cast<GO>(cutAll[begin + k]));
     MultiVector C(rowMap, nc, true);
     C.doExport(Cov, fromInterior, Tpetra::ADD);
     for (int k = 0; k < nc; ++k) {
@@ -461,8 +451,7 @@ ConstrainedProlongation constrainProlongation(
     keepAfter.putScalar(1.0);
     for (GO g : droppedGids) {
       const LO j = domainMap->getLocalElement(g);
-      if (j != Teuchos::OrdinalTraits<LO>::invalid())
-        keepAfter.replaceLocalValue(j, 0.0);
+      if (j != Teuchos::OrdinalTraits<LO>::invalid()) keepAfter.replaceLocalValue(j, 0.0);
     }
     out.P->rightScale(keepAfter);
   }
@@ -485,7 +474,8 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
               "(solvers::BlockStructure::multigrid, e.g. from sc::solvers::StressHierarchy); "
               "none was given. Use a Stress block of MUMPS or KLU2.");
   auto mg = Teuchos::rcp(new StressMultigrid());
-  mg->degree = options.smootherDegree > 0 ? options.smootherDegree : (blocks.dimension == 2 ? 2 : 3);
+  mg->degree =
+      options.smootherDegree > 0 ? options.smootherDegree : (blocks.dimension == 2 ? 2 : 3);
   mg->ratio = options.smootherRatio;
   mg->levels.resize(L);
   mg->levels[L - 1].A = S;
@@ -530,7 +520,8 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
           typename CrsMatrix::local_inds_host_view_type inds;
           typename CrsMatrix::values_host_view_type v;
           stressBasis->getLocalRowView(bRows.getLocalElement(g), inds, v);
-          contact[i] = !(inds.extent(0) == 1 && bCols.getGlobalElement(inds(0)) == g && v(0) == 1.0);
+          contact[i] =
+              !(inds.extent(0) == 1 && bCols.getGlobalElement(inds(0)) == g && v(0) == 1.0);
         }
       }
     }
@@ -551,8 +542,7 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
       const auto dv = diag.getData(0);
       std::vector<LO> dead;
       for (LO i = 0; i < static_cast<LO>(dv.size()); ++i)
-        if (dv[i] == 0.0)
-          dead.push_back(i);
+        if (dv[i] == 0.0) dead.push_back(i);
       const long long anyDead =
           core::sumOverRanks(*Ac->getComm(), static_cast<long long>(dead.size()));
       if (anyDead > 0) {

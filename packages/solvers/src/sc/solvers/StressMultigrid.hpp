@@ -24,12 +24,10 @@ namespace sc::solvers {
 /// block of BlockStructure::stressBasis on S's maps (S's unknowns are stressBasis × the σ DOFs;
 /// the finest prolongation becomes stressBasis P), or null. Throws InputError when `blocks` has
 /// no hierarchy.
-Teuchos::RCP<Tpetra::Operator<>> buildStressMultigrid(const BlockStructure& blocks,
-                                                       const Teuchos::RCP<CrsMatrix>& S,
-                                                       const std::vector<char>& constraintRows,
-                                                       bool symmetric,
-                                                       const IterativeOptions& options,
-                                                       const Teuchos::ParameterList& directList,
-                                                       const Teuchos::RCP<const CrsMatrix>& stressBasis);
+Teuchos::RCP<Tpetra::Operator<>>
+buildStressMultigrid(const BlockStructure& blocks, const Teuchos::RCP<CrsMatrix>& S,
+                     const std::vector<char>& constraintRows, bool symmetric,
+                     const IterativeOptions& options, const Teuchos::ParameterList& directList,
+                     const Teuchos::RCP<const CrsMatrix>& stressBasis);
 
 }  // namespace sc::solvers

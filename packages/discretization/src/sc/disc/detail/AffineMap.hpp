@@ -5,7 +5,8 @@
 
 namespace sc::disc {
 
-/// J⁻¹ of a d×d Jacobian (d = 2, 3) with determinant det, by the adjugate: (J⁻¹)_ij = cof(J)_ji / det.
+/// J⁻¹ of a d×d Jacobian (d = 2, 3) with determinant det, by the adjugate: (J⁻¹)_ij = cof(J)_ji /
+/// det.
 inline void invertJacobian(int d, const double J[3][3], double det, double inv[3][3])
 {
   if (d == 2) {
@@ -46,7 +47,8 @@ struct AffineMap {
                        J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
                        J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
     SC_THROW_IF(!(det > 0.0), core::InternalError,
-                "element " << e << " has det J = " << det << " (mesh orientation convention broken)");
+                "element " << e << " has det J = " << det
+                           << " (mesh orientation convention broken)");
   }
   /// J⁻¹ (d = 2, 3) by the adjugate.
   void inverse(int d, double inv[3][3]) const { invertJacobian(d, J, det, inv); }

@@ -41,7 +41,7 @@ private:
   const MixedElasticitySpace& space_;
   int d_, nq_, element_ = -1;
   bool curved_ = false;
-  View refPoints_, p2Values_, p2Grads_;  // (nq, d), (nN, nq), (nN, nq, d)
+  View refPoints_, p2Values_, p2Grads_;              // (nq, d), (nN, nq), (nN, nq, d)
   std::vector<std::array<double, 3>> sideTangents_;  // per side: d−1 tangents of 3
   std::vector<double> x_, J_, det_;
 };
