@@ -52,6 +52,10 @@ TEUCHOS_UNIT_TEST(Expression, MalformedFormulaNamesKeyFormulaAndPosition)
   TEST_ASSERT(compileError("3 +* 4").find("Unexpected operator \"*\" found at position 3") !=
               std::string::npos);
   TEST_ASSERT(compileError("").find("is not a valid formula") != std::string::npos);
+  // muparser's "Missing parenthesis" has no position of its own: the unclosed '(' is named.
+  TEST_ASSERT(compileError("sin(x").find("Missing parenthesis at position 3: the '(' there is "
+                                         "not closed") != std::string::npos);
+  TEST_ASSERT(compileError("((x)").find("Missing parenthesis at position 0") != std::string::npos);
 }
 
 TEUCHOS_UNIT_TEST(Expression, UnknownVariableIsAnInputError)

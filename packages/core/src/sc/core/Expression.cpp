@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 #include <muParser.h>
 
@@ -74,6 +75,18 @@ Expression::Expression(const std::string& formula, const std::string& key)
     I.parser.Eval();
   } catch (const mu::Parser::exception_type& e) {
     std::ostringstream hint;
+    // muparser reports a missing ')' without a position: name the '(' that is not closed (the
+    // innermost one; positions count from 0, as in muparser's other messages).
+    if (e.GetCode() == mu::ecMISSING_PARENS) {
+      std::vector<std::size_t> open;
+      for (std::size_t i = 0; i < formula.size(); ++i) {
+        if (formula[i] == '(')
+          open.push_back(i);
+        else if (formula[i] == ')' && !open.empty())
+          open.pop_back();
+      }
+      if (!open.empty()) hint << " at position " << open.back() << ": the '(' there is not closed";
+    }
     if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && isIdentifier(e.GetToken()))
       hint << " ('" << e.GetToken() << "' is not a variable, constant or function)";
     // An unbalanced parenthesis is most often a comma inside a formula, at which the deck's
