@@ -63,6 +63,15 @@ CommandLine parseCommandLine(int argc, char* argv[])
     const std::string a = argv[i];
     auto value = [&](const std::string& flag) -> std::string {
       SC_THROW_IF(i + 1 >= argc, sc::core::InputError, flag << " needs a value. " << kUsage);
+      // `--output --check deck.xml` (a value forgotten) would otherwise write into a directory
+      // named "--check" and run instead of checking.
+      const std::string next = argv[i + 1];
+      for (const char* option : {"--output", "--set", "--restart", "--check", "--quiet",
+                                 "--print-parameters", "--help", "-h", "--version"})
+        SC_THROW_IF(next == option, sc::core::InputError,
+                    flag << " needs a value, but the next argument is the option '" << next
+                         << "' (a value that starts like an option: write it as ./" << next
+                         << " or give the value first). " << kUsage);
       return argv[++i];
     };
     // An empty directory (`--output "$DIR"` with DIR unset) is a scripting error: read as "not
