@@ -27,7 +27,11 @@ Reads only what the run wrote (docs/output.md): summary.json, contact_cycle<N>.c
                        its own prescribed component, the contact force against the obstacle's
                        displacement), every force component against the step's time, and the
                        contact and stick zone's size against the time, in 2D with the stick
-                       zone's ends (summary.json's contact.stick_zone_ends) as a band.
+                       zone's ends (summary.json's contact.stick_zone_ends) as a band; where a
+                       prescribed displacement reverses (a loading-unloading cycle), a panel of
+                       the force minus its least-squares straight line in that displacement,
+                       which shows a thin hysteresis loop. Steps are labelled all (up to 8 steps)
+                       or at the first, the last and the turning points.
 
 As a module (importlib, see docs/adaptivity/hertz2d_study.py) it offers the readers and the
 Hertz reference from the run's own parameters (hertz_reference) to the docs' study scripts.
@@ -314,7 +318,14 @@ def plot_load_history(summary, directory, plt, out, name="load_history.png"):
                                       default="Displacement" if part == "obstacle" else None) == "Displacement":
             pairs.append((c, force, part, axes_names[i]))
 
-    panels = (1 if pairs else 0) + 1 + (1 if contact else 0)
+    # A displacement that reverses (a loading-unloading cycle): the force minus its least-squares
+    # straight line in the displacement, where a thin hysteresis loop shows.
+    def reverses(xs):
+        d = [b - a for a, b in zip(xs, xs[1:]) if b != a]
+        return any(d0 * d1 < 0 for d0, d1 in zip(d, d[1:]))
+
+    loops = [pair for pair in pairs if reverses([r[pair[0]] for r in steps])]
+    panels = (1 if pairs else 0) + len(loops) + 1 + (1 if contact else 0)
     fig, axs = plt.subplots(1, panels, figsize=(5.2 * panels, 4.4), squeeze=False)
     axs = list(axs[0])
     markers = dict(marker="o", ms=5)
@@ -324,6 +335,14 @@ def plot_load_history(summary, directory, plt, out, name="load_history.png"):
         if max(xs) == min(xs):
             ax.set_xlim(xs[0] - 0.5, xs[0] + 0.5)
 
+    def annotate_steps(ax, xs, ys):
+        # Every step of a short history; of a longer one the first, the last and the turning points.
+        turning = [k for k in range(1, len(xs) - 1) if (xs[k] - xs[k - 1]) * (xs[k + 1] - xs[k]) < 0]
+        shown = range(len(xs)) if len(xs) <= 8 else [0] + turning + [len(xs) - 1]
+        for k in shown:
+            ax.annotate(f"step {int(steps[k]['step'])}", (xs[k], ys[k]), textcoords="offset points",
+                        xytext=(4, -12), fontsize=7)
+
     if pairs:
         ax = axs.pop(0)
         for c, force, part, axis in pairs:
@@ -332,14 +351,27 @@ def plot_load_history(summary, directory, plt, out, name="load_history.png"):
             label = (f"contact force {axis} against the obstacle's displacement {axis}" if part == "obstacle"
                      else f"reaction of {part}, {axis}, against its prescribed {axis}")
             ax.plot(xs, ys, "-", label=label, **markers)
-            for k, (x, y) in enumerate(zip(xs, ys)):
-                ax.annotate(f"step {int(steps[k]['step'])}", (x, y), textcoords="offset points",
-                            xytext=(4, -12), fontsize=7)
+            annotate_steps(ax, xs, ys)
         ax.set_xlabel("prescribed displacement")
         ax.set_ylabel("force on the body")
         ax.set_title("force against prescribed displacement")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7)
+
+    for c, force, part, axis in loops:
+        ax = axs.pop(0)
+        xs = [r[c] for r in steps]
+        ys = [r[force] for r in steps]
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        slope = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+        rest = [y - my - slope * (x - mx) for x, y in zip(xs, ys)]
+        ax.plot(xs, rest, "-", color="tab:purple", **markers)
+        annotate_steps(ax, xs, rest)
+        ax.axhline(0.0, color="0.6", lw=0.8)
+        ax.set_xlabel(f"prescribed {axis} of {part}" if part != "obstacle" else f"obstacle's displacement {axis}")
+        ax.set_ylabel(f"force minus {slope:.4g} × displacement (least squares)")
+        ax.set_title("hysteresis: force minus its best straight line")
+        ax.grid(True, alpha=0.3)
 
     ax = axs.pop(0)
     if contact:
