@@ -12,7 +12,11 @@ bars"):
   "Converged loads", GetFEM P2): the promise the target makes to the user;
 - from the fourth cycle on, the estimated error of the load is not below its true error against the
   peer value wherever that true error is resolved (above twice the peer's uncertainty);
-- cycle 0 has no error bars (null), every later cycle has them.
+- cycle 0 has no error bars (null), every later cycle has them;
+- the half-width's error bar is 1.5 × its resolution (`contact.half_width_resolution`, docs/output.md
+  "Error bars"), and from the fourth cycle on it contains the half-width's true error against the
+  peer's converged a = 0.07782 (docs/peer/README.md "Converged loads", the same digits on levels 1-3;
+  ± 1e-5 for its rounding and the levels).
 """
 import argparse
 import json
@@ -22,6 +26,7 @@ import subprocess
 import sys
 
 PEER_P, PEER_U = 106.805, 0.003
+PEER_A, PEER_A_U = 0.07782, 1e-5
 
 
 def fail(msg):
@@ -74,11 +79,17 @@ def main():
             fail("cycle %d lacks error bars: %s" % (c["cycle"], ee))
         if c["reactions"]["Top"]["estimated_error"]["force"] is None:
             fail("cycle %d lacks the reaction's error bar" % c["cycle"])
+        r = c["contact"]["half_width_resolution"]
+        if not (r > 0 and abs(ee["half_width"] - 1.5 * r) <= 1e-12 * r):
+            fail("cycle %d: half-width error bar %.6g, resolution %.6g (want 1.5 x)" % (c["cycle"], ee["half_width"], r))
         if c["cycle"] < 3:
             continue
         t = abs(math.hypot(*c["contact"]["force"]) - PEER_P)
         if t > 2 * PEER_U and ee["force"] < t:
             fail("cycle %d: estimated load error %.3g below the true error %.3g" % (c["cycle"], ee["force"], t))
+        t = abs(c["contact"]["half_width"] - PEER_A)
+        if ee["half_width"] + PEER_A_U < t:
+            fail("cycle %d: half-width error bar %.3g below the true error %.3g" % (c["cycle"], ee["half_width"], t))
     print("PASS")
     return 0
 

@@ -63,6 +63,12 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
         {"newton_iterations", st.newtonIterations},
         {"cycle_remedies", st.remedies},
         {"fixed_point_iterations", st.fixedPointIterations}};
+    // 2D: the resolution of the outermost-point widths (docs/output.md "Error bars"; in 3D the
+    // gap to the next point outside does not bound a ragged edge's radius).
+    if (d == 2) {
+      c["contact"]["half_width_resolution"] = cs.zoneResolution;
+      c["contact"]["stick_half_width_resolution"] = cs.stickZoneResolution;
+    }
     // Hertz's values from the computed load (contact/Hertz.hpp): the ratios say how close the
     // run is.
     if (const auto& h = results.contact->hertz)

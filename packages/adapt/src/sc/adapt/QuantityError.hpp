@@ -1,6 +1,6 @@
 #pragma once
 // The estimated error of a quantity a user reads (a load, a contact width, a peak pressure),
-// from the run's own history of that quantity and of η (docs/adaptivity.md "Error bars"): a
+// from the run's own history of that quantity and of η (docs/output.md "Error bars"): a
 // Richardson-type extrapolation in η. If the quantity's error behaves like C·η^β (η_CF's
 // observed rate in DOFs sets the quantity's: β = 1 converges with η, β = 2 like a functional,
 // twice η's rate), then for an earlier cycle j and the current cycle n

@@ -10,10 +10,13 @@ namespace {
 
 // Half-width / radius of the set `in` among all points: midpoint between the outermost point
 // inside and the nearest point outside beyond it (on each side in 2D). `ends` (2D): the two
-// ends so found, in the signed coordinate.
+// ends so found, in the signed coordinate. `resolution`: the largest error of that midpoint
+// when the edge lies anywhere between the two points, half their gap (2D: the mean of the two
+// ends' half-gaps, as the half-width is the mean of the ends); 0 where no point lies outside.
 double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool signedCoordinate,
-                std::array<double, 2>* ends = nullptr)
+                double* resolution, std::array<double, 2>* ends = nullptr)
 {
+  *resolution = 0.0;
   double maxIn = -1e300, minIn = 1e300;
   bool any = false;
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -30,9 +33,15 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
       if (s[i] < minIn) prevOut = std::max(prevOut, s[i]);
     }
   const double right = nextOut < 1e299 ? 0.5 * (maxIn + nextOut) : maxIn;
-  if (!signedCoordinate) return right;
+  const double rightGap = nextOut < 1e299 ? 0.5 * (nextOut - maxIn) : 0.0;
+  if (!signedCoordinate) {
+    *resolution = rightGap;
+    return right;
+  }
   const double left = prevOut > -1e299 ? 0.5 * (minIn + prevOut) : minIn;
+  const double leftGap = prevOut > -1e299 ? 0.5 * (minIn - prevOut) : 0.0;
   if (ends) *ends = {left, right};
+  *resolution = 0.5 * (leftGap + rightGap);
   return 0.5 * (right - left);
 }
 
@@ -125,8 +134,9 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     active.push_back(all[i + 1] != 0.0);
     stick.push_back(all[i + 1] == 1.0);
   }
-  out.zoneSize = zoneSize(s, active, dim == 2);
-  out.stickZoneSize = zoneSize(s, stick, dim == 2, dim == 2 ? &out.stickZoneEnds : nullptr);
+  out.zoneSize = zoneSize(s, active, dim == 2, &out.zoneResolution);
+  out.stickZoneSize = zoneSize(s, stick, dim == 2, &out.stickZoneResolution,
+                               dim == 2 ? &out.stickZoneEnds : nullptr);
   return out;
 }
 

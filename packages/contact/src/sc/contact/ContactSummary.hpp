@@ -21,6 +21,12 @@ struct ContactSummary {
   double maxPressure = 0.0;       ///< max over the face DOF points of −σ_N (≥ 0)
   double zoneSize = 0.0;       ///< half-width (2D) or radius (3D) of the contact zone (outermost)
   double stickZoneSize = 0.0;  ///< the same for the stick zone (0 without friction)
+  /// The resolution of zoneSize: half the gap between the outermost point in the zone and the
+  /// next point outside (2D: the mean over the two ends), the largest error of the midpoint if
+  /// the edge lies anywhere between them; 0 when no point lies outside. A bound in 2D only: in
+  /// 3D the next point outside lies on another ray of a ragged edge.
+  double zoneResolution = 0.0;
+  double stickZoneResolution = 0.0;  ///< the same for stickZoneSize
   /// 2D: the stick zone's ends (−c₋, c₊) along the plane's tangent (−ν_y, ν_x), from `center`
   /// (stickZoneSize = (c₊ + c₋)/2; after a tangential load step the zone is not centred).
   std::array<double, 2> stickZoneEnds{};
