@@ -35,6 +35,9 @@ mindlin-deresiewicz  input/mindlin_deresiewicz2d.xml: pressed (step 1), moved si
                   0.05 of the half-space 0.706 (measured 0.667): the half disc keeps the odd
                   tractions locked in by pressing (docs/contact.md "Load steps"), which move the
                   loading step's zone by +0.034 on this mesh and the full reversal's by -0.039.
+                  Peer: P, Q and the stick zone's ends of steps 2-4 against the primal GetFEM
+                  computation of the same steps (md_peer_comparison; measured P -7.9e-4, Q within
+                  6.9e-4 Q*, ends within 0.044 a; the peer's Q(-delta*)/Q* is -1.0040).
                   Stored: Q of steps 3 and 4 and their stick half-widths (1 rank, 2026-12-03), 1e-8.
 loop              input/mindlin_deresiewicz_loop2d.xml: pressed (step 1), moved sideways to delta*
                   (Q* about mu_F P/2) in n steps of h = delta*/n, back to -delta* and forth to
@@ -411,6 +414,7 @@ def mindlin_deresiewicz(summary, out, mu, E, nu, checks):
         checks.check(count >= 10 and worst <= 0.05 * mu * p0,
                      f"step {n}: q - q* against Mindlin-Deresiewicz at {count} points (>= 10): max deviation "
                      f"{worst / (mu * p0):.4f} mu_F p0 (<= 0.05)")
+    md_peer_comparison(steps, out, checks)
     for key, value in values.items():
         stored = STORED_MINDLIN_DERESIEWICZ[key]
         if stored is None:
@@ -419,6 +423,48 @@ def mindlin_deresiewicz(summary, out, mu, E, nu, checks):
             continue
         checks.check(abs(value - stored) <= 1e-8 * abs(stored), f"{key} = {value!r} against the stored {stored!r} (1e-8)")
 
+
+def md_peer_comparison(steps, out, checks):
+    """Steps 2-4 of input/mindlin_deresiewicz2d.xml against the primal GetFEM computation with
+    incremental friction of the same steps (docs/peer/README.md "Mindlin-Deresiewicz", values
+    read from docs/peer/mindlin_deresiewicz2d_primal.csv, its finest level): P, and Q (the top's
+    reaction along x) within PEER_FORCE_TOL of P and of Q* (the tolerances of peer_comparison).
+    Each end of the stick zone within this run's point spacing at that end (from the contact CSV;
+    0.0061 = 0.074 a at most ends of this coarser deck) plus the peer's node spacing h_min: both
+    codes put an end midway between two points, so each is within half its spacing of its
+    discrete zone's end."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
+                        "mindlin_deresiewicz2d_primal.csv")
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(f) if (r["elem"], r["method"]) == ("th", "mult")]
+    level = max(int(r["level"]) for r in rows)
+    peer = {int(r["step"]): r for r in rows if int(r["level"]) == level}
+    checks.check(sorted(peer) == [1, 2, 3, 4], f"{path} has steps 1-4 of level {level}")
+    if 2 not in peer:
+        return
+    qstar = float(peer[2]["Q"])
+    for n in (2, 3, 4):
+        if n not in peer:
+            continue
+        cycle, ref = steps[n - 1], peer[n]
+        P, Q = cycle["contact"]["force"][1], cycle["reactions"]["Top"]["force"][0]
+        a, ends = cycle["contact"]["half_width"], cycle["contact"]["stick_zone_ends"]
+        checks.check(abs(P / float(ref["P"]) - 1.0) <= PEER_FORCE_TOL,
+                     f"step {n}: P = {P:.6g} against the peer's {float(ref['P']):.6g}: {P / float(ref['P']) - 1.0:+.2e} "
+                     f"(<= {PEER_FORCE_TOL})")
+        checks.check(abs(Q - float(ref["Q"])) <= PEER_FORCE_TOL * abs(qstar),
+                     f"step {n}: Q = {Q:.6g} against the peer's {float(ref['Q']):.6g}: "
+                     f"{(Q - float(ref['Q'])) / qstar:+.2e} Q* (<= {PEER_FORCE_TOL} Q*)")
+        xs = sorted({x for x, _, _, _ in contact_points(out, cycle)})
+        for side, value, key in (("lower", ends[0], "stick_minus"), ("upper", ends[1], "stick_plus")):
+            r = float(ref[key])
+            below, above = [x for x in xs if x < value], [x for x in xs if x > value]
+            spacing = (min(above) - max(below)) if below and above else float("nan")
+            tol = spacing + float(ref["h_min"])
+            checks.check(abs(value - r) <= tol,
+                         f"step {n}: the stick zone's {side} end {value / a:+.4f} a against the peer's {r / a:+.4f} a "
+                         f"({(value - r) / a:+.4f} a, <= {tol / a:.4f} a: spacing {spacing / a:.4f} a + the peer's "
+                         f"{float(ref['h_min']) / a:.4f} a)")
 
 def fit_compliance(rows):
     """Least squares for (L, B) in d = L x + B g over rows (x, g, d): the 2x2 normal equations."""

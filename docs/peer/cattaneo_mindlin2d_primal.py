@@ -37,8 +37,14 @@ it (StressContact's convention, docs/output.md), half-width (c+ - c-)/2, centre 
 (columns stick_*; node resolution h_min); and, for comparison, |t_x| < 0.95 mu_F p alone with the
 outermost stick node as the end ('_trac': it misses stick nodes where |t_x| is within 5% of mu_F p).
 
+With --deck-steps mindlin-deresiewicz the steps of input/mindlin_deresiewicz2d.xml instead: top
+u = (0, -0.01), (0.0043321, -0.01), (0.00216605, -0.01), (-0.0043321, -0.01), each step's friction
+on the slip from the step before (docs/peer/README.md "Mindlin-Deresiewicz").
+
 Usage: nice -n 10 /usr/bin/python3 docs/peer/cattaneo_mindlin2d_primal.py [--levels 0 1 2 3]
-Writes docs/peer/cattaneo_mindlin2d_primal.csv and prints the table and a summary ('#S').
+                                   [--deck-steps cattaneo-mindlin|mindlin-deresiewicz]
+Writes docs/peer/cattaneo_mindlin2d_primal.csv (mindlin_deresiewicz2d_primal.csv) and prints the
+table and a summary ('#S').
 """
 import argparse
 import csv
@@ -59,7 +65,11 @@ gf.util('warning level', 0)
 E, NU, MUF = 20600.0, 0.4999, 0.4
 LAM = E * NU / ((1 + NU) * (1 - 2 * NU))
 MU = E / (2 * (1 + NU))
-STEPS = [(0.0, -0.01), (0.0043321, -0.01)]
+# The top's displacement per load step: input/cattaneo_mindlin2d.xml, or with --deck-steps
+# mindlin-deresiewicz input/mindlin_deresiewicz2d.xml (pressed, delta*, back to delta*/2, on to -delta*).
+STEP_TABLES = {'cattaneo-mindlin': [(0.0, -0.01), (0.0043321, -0.01)],
+               'mindlin-deresiewicz': [(0.0, -0.01), (0.0043321, -0.01), (0.00216605, -0.01), (-0.0043321, -0.01)]}
+STEPS = STEP_TABLES['cattaneo-mindlin']
 H0 = 0.008
 MAXRES = 1e-6
 PROFILE = None
@@ -256,14 +266,21 @@ def main():
     ap.add_argument('--elem', nargs='+', default=['th'], choices=['th', 'p2'])
     ap.add_argument('--methods', nargs='+', default=['mult'], choices=['mult', 'brick'])
     ap.add_argument('--seed', type=int, default=1)
-    ap.add_argument('--csv', default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                                  'cattaneo_mindlin2d_primal.csv'))
+    ap.add_argument('--deck-steps', choices=sorted(STEP_TABLES), default='cattaneo-mindlin',
+                    help="the load steps: input/cattaneo_mindlin2d.xml's (default) or "
+                         "input/mindlin_deresiewicz2d.xml's")
+    ap.add_argument('--csv', help='default: docs/peer/cattaneo_mindlin2d_primal.csv, or '
+                                  'mindlin_deresiewicz2d_primal.csv with --deck-steps mindlin-deresiewicz')
     ap.add_argument('--verbose', action='store_true')
     ap.add_argument('--summarize', metavar='CSV')
     ap.add_argument('--profile', metavar='FILE', help='append the step-2 nodal profile (level elem x p t_x du_x)')
     args = ap.parse_args()
-    global PROFILE
+    global PROFILE, STEPS
     PROFILE = args.profile
+    STEPS = STEP_TABLES[args.deck_steps]
+    if args.csv is None:
+        args.csv = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                args.deck_steps.replace('-', '_') + '2d_primal.csv')
     if args.summarize:
         with open(args.summarize) as f:
             summarize(list(csv.DictReader(f)))
