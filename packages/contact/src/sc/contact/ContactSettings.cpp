@@ -145,10 +145,15 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
       for (double x : c.obstacleAxis)
         a += x * x;
       a = std::sqrt(a);
-      SC_THROW_IF(c.obstacleAxis.size() != 3 || !(a > 0.0), core::InputError,
+      SC_THROW_IF(c.obstacleAxis.size() != 3, core::InputError,
                   "'Contact/Obstacle' = 'Cylinder' needs 'Contact/Obstacle axis', a non-zero "
                   "vector of 3 components (got "
                       << c.obstacleAxis.size() << " components).");
+      SC_THROW_IF(!(a > 0.0) || !std::isfinite(a), core::InputError,
+                  "'Contact/Obstacle' = 'Cylinder' needs 'Contact/Obstacle axis', a non-zero "
+                  "vector of 3 components (got {"
+                      << c.obstacleAxis[0] << ", " << c.obstacleAxis[1] << ", " << c.obstacleAxis[2]
+                      << "}, of length " << a << ").");
       for (double& x : c.obstacleAxis)
         x /= a;
     }
