@@ -484,31 +484,39 @@ TEUCHOS_UNIT_TEST(Loads, InclinedBoxWithRollers3D)
 
 // (b, e) Pure bending: the moment by a linear Traction Expression on Right, a Symmetry plane on
 // Left, the bottom held by the exact (quadratic) displacement as an Expression, Top free.
-// σ_h = σ and θ_h = θ to round-off, in plane strain and plane stress.
+// σ_h = σ and θ_h = θ to round-off, in plane strain and plane stress. The same moment as a
+// Pressure that varies along Right, p = −6(y − 0.5) (σn = −p n, n = e_x): the same solution.
 TEUCHOS_UNIT_TEST(Loads, PureBendingByExpressions)
 {
   const double c = 6.0;
-  for (bool planeStress : {false, true}) {
-    const sc::core::Material material{200.0, 0.25, planeStress};
-    const PureBending exact(c, material);
-    Teuchos::ParameterList bc;
-    bc.sublist("Left").set("Type", std::string("Symmetry"));
-    bc.sublist("Right").set("Type", std::string("Traction"));
-    bc.sublist("Right").set("Expression", formulas({"6*(y - 0.5)", "0"}));
-    bc.sublist("Bottom").set("Type", std::string("Displacement"));
-    bc.sublist("Bottom").set(
-        "Expression", formulas({exact.displacementFormula(0), exact.displacementFormula(1)}));
-    sc::assembly::ElasticityData data{material, readConditions(bc)};
-    MeshSpec mesh;
-    mesh.size = 0.3;
-    const auto e = solve(mesh, 1, data, exact);
-    out << (planeStress ? "plane stress" : "plane strain")
-        << ": |s-sh|/|s| = " << e.stress / e.stressNorm
-        << ", |th-thh|/|th| = " << e.rotation / e.rotationNorm << "\n";
-    TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
-    TEST_COMPARE(e.rotation, <=, 1e-10 * e.rotationNorm);
-    TEST_COMPARE(e.displacement, <=, 0.05 * e.displacementNorm);
-  }
+  for (bool pressure : {false, true})
+    for (bool planeStress : {false, true}) {
+      const sc::core::Material material{200.0, 0.25, planeStress};
+      const PureBending exact(c, material);
+      Teuchos::ParameterList bc;
+      bc.sublist("Left").set("Type", std::string("Symmetry"));
+      if (pressure) {
+        bc.sublist("Right").set("Type", std::string("Pressure"));
+        bc.sublist("Right").set("Expression", formulas({"-6*(y - 0.5)"}));
+      } else {
+        bc.sublist("Right").set("Type", std::string("Traction"));
+        bc.sublist("Right").set("Expression", formulas({"6*(y - 0.5)", "0"}));
+      }
+      bc.sublist("Bottom").set("Type", std::string("Displacement"));
+      bc.sublist("Bottom").set(
+          "Expression", formulas({exact.displacementFormula(0), exact.displacementFormula(1)}));
+      sc::assembly::ElasticityData data{material, readConditions(bc)};
+      MeshSpec mesh;
+      mesh.size = 0.3;
+      const auto e = solve(mesh, 1, data, exact);
+      out << (pressure ? "Pressure, " : "Traction, ")
+          << (planeStress ? "plane stress" : "plane strain")
+          << ": |s-sh|/|s| = " << e.stress / e.stressNorm
+          << ", |th-thh|/|th| = " << e.rotation / e.rotationNorm << "\n";
+      TEST_COMPARE(e.stress, <=, 1e-10 * e.stressNorm);
+      TEST_COMPARE(e.rotation, <=, 1e-10 * e.rotationNorm);
+      TEST_COMPARE(e.displacement, <=, 0.05 * e.displacementNorm);
+    }
 }
 
 // (c) Hydrostatic pressure on the half disc x² + (y − 1)² < 1, y < 1: a Pressure p on Arc, and on
