@@ -1,7 +1,8 @@
 # Lists (SETS, CHECKS, MPIFLAGS) are "|"-separated.
 # Run the app on DECK with --set SETS into OUT (through mpiexec with NP ranks), then check its
 # summary.json with check_summary against the stored values of EXPECTED (a tests/expected file)
-# or CHECKS, and that the XDMF output exists and no temporary file is left.
+# or CHECKS, and that the XDMF output exists and no temporary file is left; with OUTPUT_REGEX, that
+# the run's output matches it.
 foreach(v SETS CHECKS MPIFLAGS)
   string(REPLACE "|" ";" ${v} "${${v}}")
 endforeach()
@@ -10,7 +11,17 @@ set(cmd ${MPIEXEC} -n ${NP} ${MPIFLAGS} ${APP} ${DECK} --output ${OUT})
 foreach(s IN LISTS SETS)
   list(APPEND cmd --set "${s}")
 endforeach()
-execute_process(COMMAND ${cmd} RESULT_VARIABLE rc)
+if(OUTPUT_REGEX)
+  # The run's progress output (stdout and stderr, echoed) must match OUTPUT_REGEX: e.g. the cycle
+  # summary line with the numbers that summary.json holds.
+  execute_process(COMMAND ${cmd} RESULT_VARIABLE rc OUTPUT_VARIABLE runOut ERROR_VARIABLE runErr)
+  message("${runOut}${runErr}")
+  if(NOT "${runOut}${runErr}" MATCHES "${OUTPUT_REGEX}")
+    message(FATAL_ERROR "the run's output does not match OUTPUT_REGEX '${OUTPUT_REGEX}'")
+  endif()
+else()
+  execute_process(COMMAND ${cmd} RESULT_VARIABLE rc)
+endif()
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "stresscontact failed with status ${rc}")
 endif()
