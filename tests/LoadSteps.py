@@ -74,7 +74,9 @@ loop              input/mindlin_deresiewicz_loop2d.xml: pressed (step 1), moved 
                   loading step's slip zone, +-0.940 a and +-0.879 a against 0.934 and 0.863, and
                   shifted after, like the loading step's: not checked.) Stored: Q*,
                   Q(-delta*) and Q(+delta*) after reloading (1 rank, 2026-12-03), 1e-8, per variant
-                  (--variant).
+                  (--variant). With --peer (the shipped deck): Q of every step within 1.5e-3 Q* of
+                  the primal GetFEM computation of the 13 steps (loop_peer_comparison; measured
+                  6.3e-4 Q* at most), whose own deviations from Masing are this run's to 2e-4 Q*.
 incremental       input/hertz2d_incremental.xml (the Hertz half disc of input/hertz2d.xml, nu = 0.28,
                   mu_F = 0.4, on one fixed mesh) pressed by 0.01 t in N equal load steps, for each
                   N of --steps. One step is the static problem: its stick ratio c/a within 0.02 of
@@ -466,6 +468,33 @@ def md_peer_comparison(steps, out, checks):
                          f"({(value - r) / a:+.4f} a, <= {tol / a:.4f} a: spacing {spacing / a:.4f} a + the peer's "
                          f"{float(ref['h_min']) / a:.4f} a)")
 
+def loop_peer_comparison(pts, n, checks):
+    """Every step of the loop against the primal GetFEM computation of the same 13 steps
+    (docs/peer/README.md "Mindlin-Deresiewicz loop", docs/peer/mindlin_deresiewicz_loop2d_primal.csv,
+    its finest level): Q within PEER_FORCE_TOL Q* (the tolerance of peer_comparison), and the
+    peer's own deviations from Masing's construction printed beside this run's."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
+                        "mindlin_deresiewicz_loop2d_primal.csv")
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(f) if (r["elem"], r["method"]) == ("th", "mult")]
+    level = max(int(r["level"]) for r in rows)
+    peer = {int(r["step"]): float(r["Q"]) for r in rows if int(r["level"]) == level}
+    checks.check(sorted(peer) == list(range(1, len(pts) + 1)), f"{path} has steps 1-{len(pts)} of level {level}")
+    if len(peer) != len(pts):
+        return
+    qstar = peer[n + 1]
+    for k, (d, Q, _, _) in enumerate(pts[1:], start=2):
+        checks.check(abs(Q - peer[k]) <= PEER_FORCE_TOL * qstar,
+                     f"step {k}: Q = {Q:.6f} against the peer's {peer[k]:.6f} ({(Q - peer[k]) / qstar:+.2e} Q*, "
+                     f"<= {PEER_FORCE_TOL} Q*)")
+    dev = []
+    for j in range(1, n + 1):
+        dev.append(((peer[n + 1 + j] - (qstar - 2.0 * peer[1 + j])) / qstar,
+                    (peer[2 * n + 1 + j] - (-qstar + 2.0 * peer[1 + j])) / qstar))
+    print("the peer's deviations from Masing (unloading, reloading) / Q*: " +
+          ", ".join(f"({u:+.4f}, {r:+.4f})" for u, r in dev))
+
+
 def fit_compliance(rows):
     """Least squares for (L, B) in d = L x + B g over rows (x, g, d): the 2x2 normal equations."""
     sxx = sum(x * x for x, g, d in rows)
@@ -478,7 +507,7 @@ def fit_compliance(rows):
     return L, B, max(abs(L * x + B * g - d) for x, g, d in rows)
 
 
-def loop(summary, mu, E, nu, checks, variant, zone_ends):
+def loop(summary, mu, E, nu, checks, variant, zone_ends, peer=False):
     """The Mindlin-Deresiewicz hysteresis loop (see the top): Masing's construction from the
     computed loading branch, the loop's closure and symmetry, and its shape against Johnson's
     plane-strain compliance without the datum's linear term."""
@@ -556,6 +585,8 @@ def loop(summary, mu, E, nu, checks, variant, zone_ends):
                 checks.check(abs(end - ref) <= ENDS_TOL * a,
                              f"reloading at x = {d / dstar:+.2f} delta*: the stick zone's {side} end {end / a:+.4f} a "
                              f"against Johnson's {ref / a:+.4f} a (+- {ENDS_TOL} a)")
+    if peer:
+        loop_peer_comparison(pts, n, checks)
     stored = STORED_LOOP[variant]
     values = {"Qstar": qstar, "Qrev": qrev, "Qend": qend}
     for key, value in values.items():
@@ -616,6 +647,8 @@ def main():
     parser.add_argument("--kill-cycle", type=int, default=13)
     parser.add_argument("--variant", choices=["shipped", "coarse"], default="shipped",
                         help="loop: which stored values (the deck as shipped, or with COARSE_LOOP_SETS)")
+    parser.add_argument("--peer", action="store_true",
+                        help="loop: compare Q of every step with docs/peer/mindlin_deresiewicz_loop2d_primal.csv")
     parser.add_argument("--zone-ends", action="store_true",
                         help="loop: check the stick zone's ends on the reloading branch (a deck refined in each step)")
     parser.add_argument("--set-checkpoint-int", help="tests/tools/set_checkpoint_int (restart-errors)")
@@ -634,7 +667,7 @@ def main():
     elif args.case == "loop":
         if args.variant == "coarse":
             args.sets = COARSE_LOOP_SETS + args.sets
-        loop(run(args, mpi=args.ranks > 1), 0.4, 20600.0, 0.4999, checks, args.variant, args.zone_ends)
+        loop(run(args, mpi=args.ranks > 1), 0.4, 20600.0, 0.4999, checks, args.variant, args.zone_ends, args.peer)
     elif args.case == "mindlin-deresiewicz":
         mindlin_deresiewicz(run(args), args.out, 0.4, 20600.0, 0.4999, checks)
     else:

@@ -39,7 +39,8 @@ outermost stick node as the end ('_trac': it misses stick nodes where |t_x| is w
 
 With --deck-steps mindlin-deresiewicz the steps of input/mindlin_deresiewicz2d.xml instead: top
 u = (0, -0.01), (0.0043321, -0.01), (0.00216605, -0.01), (-0.0043321, -0.01), each step's friction
-on the slip from the step before (docs/peer/README.md "Mindlin-Deresiewicz").
+on the slip from the step before (docs/peer/README.md "Mindlin-Deresiewicz"); with
+mindlin-deresiewicz-loop the 13 steps of input/mindlin_deresiewicz_loop2d.xml.
 
 Usage: nice -n 10 /usr/bin/python3 docs/peer/cattaneo_mindlin2d_primal.py [--levels 0 1 2 3]
                                    [--deck-steps cattaneo-mindlin|mindlin-deresiewicz]
@@ -68,7 +69,10 @@ MU = E / (2 * (1 + NU))
 # The top's displacement per load step: input/cattaneo_mindlin2d.xml, or with --deck-steps
 # mindlin-deresiewicz input/mindlin_deresiewicz2d.xml (pressed, delta*, back to delta*/2, on to -delta*).
 STEP_TABLES = {'cattaneo-mindlin': [(0.0, -0.01), (0.0043321, -0.01)],
-               'mindlin-deresiewicz': [(0.0, -0.01), (0.0043321, -0.01), (0.00216605, -0.01), (-0.0043321, -0.01)]}
+               'mindlin-deresiewicz': [(0.0, -0.01), (0.0043321, -0.01), (0.00216605, -0.01), (-0.0043321, -0.01)],
+               # input/mindlin_deresiewicz_loop2d.xml: delta*/4 steps to delta*, delta*/2 steps to
+               # -delta* and back to delta*
+               'mindlin-deresiewicz-loop': [(0.0043321 * k / 4, -0.01) for k in (0, 1, 2, 3, 4, 2, 0, -2, -4, -2, 0, 2, 4)]}
 STEPS = STEP_TABLES['cattaneo-mindlin']
 H0 = 0.008
 MAXRES = 1e-6
@@ -270,7 +274,8 @@ def main():
                     help="the load steps: input/cattaneo_mindlin2d.xml's (default) or "
                          "input/mindlin_deresiewicz2d.xml's")
     ap.add_argument('--csv', help='default: docs/peer/cattaneo_mindlin2d_primal.csv, or '
-                                  'mindlin_deresiewicz2d_primal.csv with --deck-steps mindlin-deresiewicz')
+                                  'mindlin_deresiewicz2d_primal.csv, mindlin_deresiewicz_loop2d_primal.csv '
+                                  'with --deck-steps')
     ap.add_argument('--verbose', action='store_true')
     ap.add_argument('--summarize', metavar='CSV')
     ap.add_argument('--profile', metavar='FILE', help='append the step-2 nodal profile (level elem x p t_x du_x)')
@@ -279,8 +284,9 @@ def main():
     PROFILE = args.profile
     STEPS = STEP_TABLES[args.deck_steps]
     if args.csv is None:
-        args.csv = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                args.deck_steps.replace('-', '_') + '2d_primal.csv')
+        stem = {'mindlin-deresiewicz-loop': 'mindlin_deresiewicz_loop'}.get(args.deck_steps,
+                                                                          args.deck_steps.replace('-', '_'))
+        args.csv = os.path.join(os.path.dirname(os.path.abspath(__file__)), stem + '2d_primal.csv')
     if args.summarize:
         with open(args.summarize) as f:
             summarize(list(csv.DictReader(f)))
