@@ -35,7 +35,7 @@
 
 #include "CsvFields.hpp"
 
-#include <sc/contact/Bernstein.hpp>
+#include <sc/disc/Bernstein.hpp>
 
 namespace {
 
@@ -68,8 +68,8 @@ using sc::testtools::splitCsvLine;
 
 // The Bernstein basis of a face's constraints, the library's own definition (docs/contact.md
 // "Constraint points").
-using sc::contact::bernstein;
-using sc::contact::bernsteinIndices;
+using sc::disc::bernstein;
+using sc::disc::bernsteinIndices;
 
 struct Check {
   std::string name;

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <iostream>
 
-#include <Teuchos_SerialDenseMatrix.hpp>
-#include <Teuchos_SerialDenseSolver.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -14,15 +12,13 @@
 #include <sc/core/Collective.hpp>
 #include <sc/core/Error.hpp>
 #include <sc/core/Parameters.hpp>
-#include <sc/disc/ElementValues.hpp>
-#include <sc/disc/FaceDofPoints.hpp>
 #include <sc/disc/MixedElasticitySpace.hpp>
 #include <sc/mesh/SimplexMesh.hpp>
 #include <sc/solvers/LinearSolver.hpp>
 
-#include "sc/contact/Bernstein.hpp"
-#include "sc/contact/ContactSummary.hpp"
+#include "sc/contact/ContactConstraints.hpp"
 #include "sc/contact/Obstacle.hpp"
+#include "sc/contact/StateTransfer.hpp"
 
 namespace sc::contact {
 
@@ -78,186 +74,6 @@ Teuchos::RCP<const Teuchos::ParameterList> ActiveSetSolver::getValidParameters()
   return valid;
 }
 
-namespace {
-
-// The affine function of the position on a face (an edge in 2D, a triangle in 3D) that fits the
-// values v[q] (d components) at the points c[q] in the least-squares sense, evaluated at x. The
-// face's coordinates are orthonormal directions spanned by the points; with fewer points than
-// the face needs for an affine fit (or degenerate ones), the mean value.
-std::array<double, 3> fitAffineOnFace(const std::vector<const double*>& c,
-                                      const std::vector<const double*>& v, int d, const double* x)
-{
-  const std::size_t m = c.size();
-  std::array<double, 3> mean{0, 0, 0}, cbar{0, 0, 0};
-  for (std::size_t q = 0; q < m; ++q)
-    for (int i = 0; i < d; ++i) {
-      mean[i] += v[q][i] / m;
-      cbar[i] += c[q][i] / m;
-    }
-  // Orthonormal directions e[0..d-2] from the points (Gram–Schmidt on c[q] − c[0]).
-  std::vector<std::array<double, 3>> e;
-  double scale = 0.0;
-  for (std::size_t q = 1; q < m; ++q)
-    for (int i = 0; i < d; ++i)
-      scale = std::max(scale, std::abs(c[q][i] - c[0][i]));
-  for (std::size_t q = 1; q < m && static_cast<int>(e.size()) < d - 1; ++q) {
-    std::array<double, 3> a{0, 0, 0};
-    for (int i = 0; i < d; ++i)
-      a[i] = c[q][i] - c[0][i];
-    for (const auto& b : e) {
-      const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-      for (int i = 0; i < 3; ++i)
-        a[i] -= ab * b[i];
-    }
-    const double norm = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (norm <= 1e-8 * scale) continue;
-    for (double& ai : a)
-      ai /= norm;
-    e.push_back(a);
-  }
-  if (scale == 0.0 || static_cast<int>(e.size()) < d - 1) return mean;
-  // Normal equations in the face coordinates s = E (x − c̄): (Σ s sᵀ) g_i = Σ s (v_i − v̄_i).
-  const int k = d - 1;
-  auto coords = [&](const double* y) {
-    std::array<double, 2> s{0, 0};
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < d; ++i)
-        s[j] += e[j][i] * (y[i] - cbar[i]);
-    return s;
-  };
-  double S[2][2] = {{0, 0}, {0, 0}}, rhs[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  for (std::size_t q = 0; q < m; ++q) {
-    const auto s = coords(c[q]);
-    for (int a = 0; a < k; ++a) {
-      for (int b = 0; b < k; ++b)
-        S[a][b] += s[a] * s[b];
-      for (int i = 0; i < d; ++i)
-        rhs[i][a] += s[a] * (v[q][i] - mean[i]);
-    }
-  }
-  const auto sx = coords(x);
-  std::array<double, 3> out = mean;
-  if (k == 1) {
-    if (S[0][0] <= 0.0) return mean;
-    for (int i = 0; i < d; ++i)
-      out[i] += sx[0] * rhs[i][0] / S[0][0];
-    return out;
-  }
-  const double det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
-  if (std::abs(det) <= 1e-12 * (S[0][0] * S[1][1])) return mean;
-  for (int i = 0; i < d; ++i) {
-    const double g0 = (S[1][1] * rhs[i][0] - S[0][1] * rhs[i][1]) / det;
-    const double g1 = (S[0][0] * rhs[i][1] - S[1][0] * rhs[i][0]) / det;
-    out[i] += g0 * sx[0] + g1 * sx[1];
-  }
-  return out;
-}
-
-// Barycentric coordinates of y in the face with vertices v[0..d-1] (an edge or a triangle).
-std::array<double, 3> barycentric(const std::array<const double*, 3>& v, const double* y, int d)
-{
-  if (d == 2) {
-    double e[2] = {v[1][0] - v[0][0], v[1][1] - v[0][1]};
-    const double t =
-        ((y[0] - v[0][0]) * e[0] + (y[1] - v[0][1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]);
-    return {1.0 - t, t, 0.0};
-  }
-  double e1[3], e2[3], r[3];
-  for (int i = 0; i < 3; ++i) {
-    e1[i] = v[1][i] - v[0][i];
-    e2[i] = v[2][i] - v[0][i];
-    r[i] = y[i] - v[0][i];
-  }
-  auto dot = [](const double* a, const double* b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
-  const double a11 = dot(e1, e1), a12 = dot(e1, e2), a22 = dot(e2, e2), b1 = dot(r, e1),
-               b2 = dot(r, e2);
-  const double det = a11 * a22 - a12 * a12;
-  const double l1 = (b1 * a22 - b2 * a12) / det, l2 = (a11 * b2 - a12 * b1) / det;
-  return {1.0 - l1 - l2, l1, l2};
-}
-
-// Inverse of the small Bernstein collocation matrix (row-major), by LAPACK through Teuchos.
-std::vector<double> invert(const std::vector<double>& a, int n)
-{
-  Teuchos::SerialDenseMatrix<int, double> A(n, n);
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c)
-      A(r, c) = a[r * n + c];
-  Teuchos::SerialDenseSolver<int, double> solver;
-  solver.setMatrix(Teuchos::rcpFromRef(A));
-  SC_THROW_IF(solver.invert() != 0, core::InternalError,
-              "singular Bernstein collocation matrix on a contact face");
-  std::vector<double> inv(static_cast<std::size_t>(n) * n);
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c)
-      inv[r * n + c] = A(r, c);
-  return inv;
-}
-
-}  // namespace
-
-bool useBernsteinConstraints(int dim, int /*degree*/, bool curvedFaces)
-{
-  // Curved faces (Mesh/Geometry order = 2): the gap is not linear along a face, and ∫ g ℓ_p
-  // can be negative next to a vertex that touches the obstacle although g ≥ 0 on the face (a
-  // zero load gave a contact force of 6% of the loaded one on the deck's mesh); B_p ≥ 0 gives
-  // G_p ≥ 0 for any g ≥ 0 (docs/contact.md "Curved contact faces").
-  if (curvedFaces) return true;
-  // 2D: the DOF points' dual weights ℓ_p have non-negative moments against the face's
-  // barycentric coordinates (min 0 at k = 1, 0.067, 0.013, 0.017 at k = 2, 3, 4), so a
-  // non-negative linear gap has a non-negative weighted gap; the point constraints are verified
-  // against Hertz at k = 1..4. 3D: at k = 1 the moments reach 0 and at k = 2 the weights are
-  // small (0.042), and the point constraints left spurious contact outside the zone (active
-  // points up to 1.26 a with up to 14% of p0 on Hertz 3D, docs/contact.md): Bernstein
-  // coefficients, whose dual weights B_p are non-negative, remove it.
-  return dim == 3;
-}
-
-void checkContactDegree(int dim, int degree)
-{
-  const double w = disc::minRelativeFaceDofWeight(dim, degree);
-  SC_THROW_IF(w <= 1e-10, core::InputError,
-              "'Discretization/Degree' = "
-                  << degree << " with contact in " << dim << "D: a contact point of RT_" << degree
-                  << " has a non-positive quadrature weight (min ∫_F L_p / |F| = " << w
-                  << "), so tractions that are non-positive at the points could pull on average: "
-                     "the contact conditions would not bound the load. Valid with contact: "
-                  << (dim == 2 ? "1, 2, 3, 4" : "1, 2") << " (docs/contact.md, 'Degree').");
-  // 3D k = 4 has positive weights but no verification (a Hertz 3D run at k = 4 that resolves the
-  // zone needs millions of DOFs): rejected rather than trusted untested.
-  SC_THROW_IF(dim == 3 && degree > 2, core::InputError,
-              "'Discretization/Degree' = "
-                  << degree
-                  << " with contact in 3D is not verified "
-                     "(the Hertz 3D tests cover k = 1, 2). Valid with contact: 1, 2 "
-                     "(docs/contact.md, 'Degree').");
-}
-
-void checkCurvedContact(int dim, int degree, ContactFrame frame)
-{
-  // Curved contact faces are verified at k = 1, 2 in 2D and k = 1 in 3D (docs/contact.md).
-  SC_THROW_IF((dim == 2 && degree > 2) || (dim == 3 && degree > 1), core::InputError,
-              "'Discretization/Degree' = "
-                  << degree
-                  << " with contact on curved faces "
-                     "('Mesh/Geometry order' = 2) in "
-                  << dim
-                  << "D is not verified (the Hertz tests "
-                     "cover k = "
-                  << (dim == 2 ? "1, 2" : "1")
-                  << " there). Set 'Mesh/Geometry "
-                     "order' = 1 (straight faces, verified for this degree) or a degree of "
-                  << (dim == 2 ? "1 or 2" : "1") << " (docs/contact.md, 'Curved contact faces').");
-  SC_THROW_IF(frame == ContactFrame::BodyNormal, core::InputError,
-              "'Contact/Frame' = 'Body normal' is not available on curved contact faces "
-              "('Mesh/Geometry order' = 2): the body normal varies along a curved face, and the "
-              "constraints (Bernstein coefficients of the face's traction) need one frame per "
-              "face. Use 'Contact/Frame' = 'Obstacle normal', or 'Mesh/Geometry order' = 1 for "
-              "the talk's body-normal model on straight faces (docs/contact.md).");
-}
-
 ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
                                  const ContactSettings& settings, const core::Material& material,
                                  const std::vector<std::string>& contactBoundaries,
@@ -265,148 +81,12 @@ ActiveSetSolver::ActiveSetSolver(const disc::MixedElasticitySpace& space,
     : space_(space), settings_(settings), comm_(std::move(comm)),
       obstacle_(createObstacle(settings, space.dim()))
 {
-  const auto& m = space.mesh();
-  const int d = m.dim();
-  const double cap = missCap(m);
-  meshSize_ = cap / 10.0;
-  const double twoMu = 2.0 * material.shearModulus();
-
-  std::vector<int> contactIds;
-  for (const auto& name : contactBoundaries)
-    contactIds.push_back(m.boundaryId(name));
-  const bool obstacleFrame = settings.frame == ContactFrame::ObstacleNormal;
-  bernstein_ = useBernsteinConstraints(d, space.degree(), space.geometryOrder() == 2);
-  // Curved contact faces: the degrees and the frame verified there (the mesh is replicated, so
-  // every rank sees all contact faces and decides alike; a rank-local throw would leave the other
-  // ranks waiting in the collectives below).
-  if (space.curvedElements()) {
-    bool curvedContact = false;
-    for (int f : m.boundaryFaces())
-      curvedContact = curvedContact || (std::find(contactIds.begin(), contactIds.end(),
-                                                  m.faceBoundaryId(f)) != contactIds.end() &&
-                                        space.isCurved(m.faceElements(f)[0]));
-    if (curvedContact) checkCurvedContact(d, space.degree(), settings.frame);
-  }
-  double minRelativeWeight = 1.0;  // min over points of ∫_F L_p / |F| (affine-invariant)
-  disc::FaceValues fv(space, 2 * space.degree() + 2);
-  for (int e : space.ownedElements()) {
-    for (int lf = 0; lf <= d; ++lf) {
-      const int f = m.elementFaces(e)[lf];
-      if (!m.isBoundaryFace(f) ||
-          std::find(contactIds.begin(), contactIds.end(), m.faceBoundaryId(f)) == contactIds.end())
-        continue;
-      const auto dofPoints = disc::stressFaceDofPoints(space, e, lf);
-      fv.reinit(e, lf);
-      // The contact frame (n, t1[, t2]) of each point: n along the obstacle's normal (out of the
-      // body) or the body's outward normal at the point (constant on a straight face, varying
-      // on a curved one).
-      auto frameAt = [&](const disc::FaceDofPoint& dp) {
-        std::array<std::array<double, 3>, 3> fr{};
-        auto& n = fr[0];
-        auto& t1 = fr[1];
-        auto& t2 = fr[2];
-        n = obstacleFrame ? obstacle_->contactNormal(dp.x.data()) : dp.normal;
-        if (d == 2) {
-          t1 = {-n[1], n[0], 0.0};
-        } else {
-          // t1 ⟂ n from the coordinate axis least aligned with n; t2 = n × t1.
-          int axis = 0;
-          for (int i = 1; i < 3; ++i)
-            if (std::abs(n[i]) < std::abs(n[axis])) axis = i;
-          std::array<double, 3> a{0, 0, 0};
-          a[axis] = 1.0;
-          const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
-          double norm = 0.0;
-          for (int i = 0; i < 3; ++i) {
-            t1[i] = a[i] - an * n[i];
-            norm += t1[i] * t1[i];
-          }
-          for (double& c : t1)
-            c /= std::sqrt(norm);
-          t2 = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
-                n[0] * t1[1] - n[1] * t1[0]};
-        }
-        return fr;
-      };
-      // Face-wide frame for the (3D degree 2) Bernstein constraints: that of the first point.
-      const auto faceFrame = frameAt(dofPoints.front());
-      const double area = fv.measure();
-      const double hF = d == 2 ? area : std::sqrt(area);
-      const int nq = static_cast<int>(dofPoints.size());
-      ContactFace cf;
-      cf.m = nq;
-      for (const auto& dp : dofPoints) {
-        std::array<long long, 3> g{};
-        for (int i = 0; i < d; ++i)
-          g[i] = space.elementDofs(e)[space.stressOffset(i) + dp.localDof];
-        cf.gids.push_back(g);
-        cf.scale.push_back(dp.scale);
-        cf.meanScale += std::abs(dp.scale) / nq;
-      }
-      // V(q, p): the constraint basis at the DOF points — the identity for point constraints,
-      // the Bernstein polynomials of the face (via barycentric coordinates) otherwise.
-      std::array<const double*, 3> fvx{};
-      for (int i = 0; i < d; ++i)
-        fvx[i] = m.vertex(m.faceVertices(f)[i]);
-      const auto alphas = bernsteinIndices(space.degree(), d);
-      cf.V.assign(static_cast<std::size_t>(nq) * nq, 0.0);
-      for (int q = 0; q < nq; ++q)
-        for (int pp = 0; pp < nq; ++pp)
-          cf.V[q * nq + pp] =
-              bernstein_ ? bernstein(alphas[pp], barycentric(fvx, dofPoints[q].xAffine.data(), d),
-                                     space.degree())
-                         : (q == pp ? 1.0 : 0.0);
-      cf.Vinv = bernstein_ ? invert(cf.V, nq) : cf.V;
-      for (int pp = 0; pp < nq; ++pp) {
-        ContactPoint p;
-        p.face = f;
-        p.block = static_cast<int>(faces_.size());
-        p.index = pp;
-        if (bernstein_) {
-          for (int i = 0; i < d; ++i)
-            for (int c = 0; c < d; ++c)
-              p.x[c] += alphas[pp][i] / static_cast<double>(space.degree()) * fvx[i][c];
-        } else {
-          p.x = dofPoints[pp].x;
-        }
-        const auto fr = bernstein_ ? faceFrame : frameAt(dofPoints[pp]);
-        p.n = fr[0];
-        p.t1 = fr[1];
-        p.t2 = fr[2];
-        p.c = settings_.newton.penaltyFactor * twoMu / (hF * area);
-        // The dual weight w_p = Σ_q V(q, p) ℓ_q (ℓ_q = ψ_q·n_F / s_q, the Lagrange function of the
-        // normal trace at q): ℓ_p itself, or B_p. Weighted gap with face quadrature (not lumped).
-        for (int q = 0; q < fv.numPoints(); ++q) {
-          double w = 0.0;
-          for (int j = 0; j < nq; ++j)
-            w += cf.V[j * nq + pp] * fv.stressNormal(dofPoints[j].localDof, q) / dofPoints[j].scale;
-          // The gap along the point's constraint direction: ν (obstacle frame), or the face's
-          // outward normal (body frame, straight faces only).
-          p.gap += fv.weight(q) * obstacle_->gap(fv.point(q), p.n.data(), cap) * w;
-          p.weight += fv.weight(q) * w;
-          for (int i = 0; i < d; ++i)
-            p.centroid[i] += fv.weight(q) * w * fv.point(q)[i];
-        }
-        for (int i = 0; i < d; ++i)
-          p.centroid[i] /= p.weight;
-        minRelativeWeight = std::min(minRelativeWeight, p.weight / area);
-        points_.push_back(p);
-      }
-      faces_.push_back(std::move(cf));
-    }
-  }
-  // The contact conditions hold at the points; the load is Σ_p ∫_F L_p σ_N(p). With a negative
-  // weight ∫_F L_p, tractions that are non-positive at every point can pull on average, and the
-  // solver returns nonsense (degree 2 on the equispaced lattice did: a force of −40404). Reject
-  // such a degree on every rank together.
-  // checkContactDegree() rejects such degrees up front; this is the same check on the actual
-  // faces (they must agree: the ratio is affine-invariant).
-  const double globalMin = core::minOverRanks(*comm_, minRelativeWeight);
-  SC_THROW_IF(globalMin <= 1e-10, core::InternalError,
-              "a contact point of RT_"
-                  << space.degree() << " in " << d
-                  << "D has a non-positive weight (min ∫_F L_p / |F| = " << globalMin
-                  << ") although checkContactDegree accepted the degree.");
+  meshSize_ = missCap(space.mesh()) / 10.0;
+  auto constraints =
+      buildContactConstraints(space, settings, material, contactBoundaries, *obstacle_, *comm_);
+  faces_ = std::move(constraints.faces);
+  points_ = std::move(constraints.points);
+  bernstein_ = constraints.bernstein;
 }
 
 ActiveSetSolver::~ActiveSetSolver() = default;
@@ -421,118 +101,7 @@ long long ActiveSetSolver::globalNumPoints() const
 void ActiveSetSolver::transferState(const std::vector<ContactPoint>& previous,
                                     const std::vector<int>& parentFace)
 {
-  // Every rank's previous points, as (parent face, index in its face, x, status, direction,
-  // centroid, load-step history per weight): the partition changes between cycles, so a new
-  // face's parent may have lived on any rank. The list is O(contact points), like the
-  // replicated mesh.
-  const int d = space_.dim();
-  const int stride = 3 * d + 5;
-  const int centroidAt = d + 5, historyAt = 2 * d + 5;
-  std::vector<double> mine;
-  mine.reserve(previous.size() * stride);
-  for (const auto& q : previous) {
-    mine.push_back(static_cast<double>(q.face));
-    mine.push_back(static_cast<double>(q.index));
-    mine.insert(mine.end(), q.x.begin(), q.x.begin() + d);
-    mine.push_back(static_cast<double>(q.status));
-    mine.push_back(q.direction[0]);
-    mine.push_back(q.direction[1]);
-    mine.insert(mine.end(), q.centroid.begin(), q.centroid.begin() + d);
-    // (Points restored from a checkpoint carry no weight and no history.)
-    for (int i = 0; i < d; ++i)
-      mine.push_back(q.history[i] != 0.0 ? q.history[i] / q.weight : 0.0);
-  }
-  const auto all = core::gatherAllConcatenated(*comm_, mine);
-  const std::size_t n = all.size() / stride;
-  if (n == 0 || parentFace.empty()) return;  // no history (first cycle): every point starts free
-  // The previous points grouped by face: (face, position in `all`), sorted.
-  std::vector<std::pair<int, std::size_t>> byFace(n);
-  for (std::size_t k = 0; k < n; ++k)
-    byFace[k] = {static_cast<int>(all[k * stride]), k};
-  std::sort(byFace.begin(), byFace.end());
-  const auto& m = space_.mesh();
-  SC_THROW_IF(parentFace.size() != static_cast<std::size_t>(m.numFaces()), core::InternalError,
-              "ActiveSetSolver::transferState: " << parentFace.size()
-                                                 << " parent faces for a mesh of " << m.numFaces()
-                                                 << " faces");
-  // Preference among previous points at the same distance (a new vertex halfway between two
-  // control points, 3D): a contact state over free, stick over slip, then the lower index
-  // within the parent face (fixed by the mesh, so the start does not depend on the rank count).
-  // (Measured on the run_hertz3d_adaptive run, 2026-12-01: 21 Newton steps over cycles 0-6; with
-  // free winning instead, 22.)
-  auto preference = [](int status) {
-    return status == static_cast<int>(PointStatus::Stick)  ? 2
-           : status == static_cast<int>(PointStatus::Slip) ? 1
-                                                           : 0;
-  };
-  for (auto& p : points_) {
-    const int parent = parentFace[p.face];
-    if (parent < 0) continue;
-    const auto range =
-        std::equal_range(byFace.begin(), byFace.end(), std::make_pair(parent, std::size_t{0}),
-                         [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (range.first == range.second)
-      continue;  // the parent face had no points (it was not a contact face): start free
-    // Distances to the parent face's points; "equal" within 1e-8 of the largest (the face's
-    // size squared), so that rounding in projected midpoints does not decide.
-    double far = 0.0;
-    std::vector<std::pair<double, std::size_t>> dist;
-    for (auto it = range.first; it != range.second; ++it) {
-      const double* x = &all[it->second * stride + 2];
-      double d2 = 0.0;
-      for (int i = 0; i < d; ++i)
-        d2 += (p.x[i] - x[i]) * (p.x[i] - x[i]);
-      dist.emplace_back(d2, it->second);
-      far = std::max(far, d2);
-    }
-    double best = 1e300;
-    for (const auto& dk : dist)
-      best = std::min(best, dk.first);
-    std::size_t chosen = dist.front().second;
-    bool found = false;
-    for (const auto& [d2, k] : dist) {
-      if (d2 > best + 1e-8 * far) continue;
-      if (!found) {
-        chosen = k, found = true;
-        continue;
-      }
-      const int s = static_cast<int>(all[k * stride + 2 + d]);
-      const int sc = static_cast<int>(all[chosen * stride + 2 + d]);
-      if (preference(s) > preference(sc) ||
-          (preference(s) == preference(sc) && all[k * stride + 1] < all[chosen * stride + 1]))
-        chosen = k;
-    }
-    p.status = static_cast<PointStatus>(static_cast<int>(all[chosen * stride + 2 + d]));
-    p.direction = {all[chosen * stride + 3 + d], all[chosen * stride + 4 + d]};
-    // The load-step history: the parent face's per-weight values, placed at their weights'
-    // centroids, fitted by an affine function of the position on the face (least squares) and
-    // evaluated at this point's centroid, times its weight. Exact for a tangential trace that is
-    // affine on the parent face, so the transfer costs O(h²) and repeated refinement of one
-    // face reproduces the same affine function (docs/theory.md §"Load steps").
-    std::vector<const double*> cq, vq;
-    bool any = false;
-    for (auto it = range.first; it != range.second; ++it) {
-      cq.push_back(&all[it->second * stride + centroidAt]);
-      vq.push_back(&all[it->second * stride + historyAt]);
-      for (int i = 0; i < d; ++i)
-        any = any || vq.back()[i] != 0.0;
-    }
-    p.history = {0.0, 0.0, 0.0};
-    if (any) {
-      // An unrefined face keeps its points: their values are taken as they are.
-      const double* same = nullptr;
-      for (std::size_t q = 0; q < cq.size() && !same; ++q) {
-        double d2 = 0.0;
-        for (int i = 0; i < d; ++i)
-          d2 += (cq[q][i] - p.centroid[i]) * (cq[q][i] - p.centroid[i]);
-        if (d2 <= 1e-20 * far) same = vq[q];
-      }
-      const auto v = same ? std::array<double, 3>{same[0], same[1], d == 3 ? same[2] : 0.0}
-                          : fitAffineOnFace(cq, vq, d, p.centroid.data());
-      for (int i = 0; i < d; ++i)
-        p.history[i] = p.weight * v[i];
-    }
-  }
+  transferContactState(points_, previous, parentFace, space_.mesh(), *comm_);
 }
 
 void ActiveSetSolver::evaluate(const CrsMatrix& K, const MultiVector& b, const MultiVector& x)

@@ -32,6 +32,7 @@
 #include <Tpetra_MultiVector_fwd.hpp>
 
 #include <sc/contact/BalancedStopping.hpp>
+#include <sc/contact/ContactConstraints.hpp>
 #include <sc/contact/ContactSettings.hpp>
 #include <sc/core/ProblemData.hpp>
 
@@ -63,21 +64,6 @@ struct ContactStatistics {
   double balancedBound = 0.0;
 };
 
-/// Throws InputError naming 'Discretization/Degree' if contact at this degree and dimension is
-/// not supported: the RT_k face DOF points must have positive weights ∫_F L_p (docs/contact.md,
-/// "Degree"). Supported: k = 1..4 in 2D, k = 1, 2 in 3D. Call it before any work (--check too).
-void checkContactDegree(int dim, int degree);
-
-/// Contact on curved faces (Mesh/Geometry order = 2) is verified at k = 1, 2 in 2D and k = 1 in
-/// 3D, in the obstacle frame; anything else is an InputError naming the keys. Called by the
-/// ActiveSetSolver when its contact faces are curved, and up front by the application.
-void checkCurvedContact(int dim, int degree, ContactFrame frame);
-
-/// Whether the contact constraints of this dimension and degree act on the Bernstein
-/// coefficients of each face's traction (non-negative dual weights) instead of the DOF points:
-/// in 3D, and on curved faces (Mesh/Geometry order = 2).
-bool useBernsteinConstraints(int dim, int degree, bool curvedFaces = false);
-
 class ActiveSetSolver {
 public:
   using CrsMatrix = Tpetra::CrsMatrix<>;
@@ -96,17 +82,7 @@ public:
   ~ActiveSetSolver();
 
   /// Start from the states of the previous cycle's points through the refinement history
-  /// (nested iteration). `parentFace[f]`: the face of the previous mesh that contains face f of
-  /// this mesh, -1 off the boundary (mesh::boundaryFaceParents of the refinement step; empty: no
-  /// history, all points start free). `previous`: this rank's points of the previous cycle (their
-  /// `face`, `index` and `x` in the previous mesh). Each point takes the state (status, slip
-  /// direction) of the nearest point of its face's parent face: an unrefined face keeps its
-  /// points' states, each half (2D) or quarter (3D) of a refined face those of the parent's
-  /// points on its side. At degree k ≥ 2 a face has several points and a child face takes, point
-  /// by point, the nearest of the parent's; where two are equally near (a new vertex halfway
-  /// between two Bernstein control points, 3D), a contact state wins over free and stick over
-  /// slip, then the lower index in the parent face. Depends on the mesh only, not on the rank
-  /// count. Collective.
+  /// (transferContactState in StateTransfer.hpp says how). Collective.
   void transferState(const std::vector<ContactPoint>& previous, const std::vector<int>& parentFace);
 
   /// Solve K x = b with the contact conditions. K, b: the elasticity system without contact
@@ -187,16 +163,6 @@ private:
   /// one coordinate are eliminated with their column, dual rows are Galerkin rows of Qᵀ K Q.
   /// Returns whether it is symmetric (no mixed rows, e.g. Coulomb slip, on any rank).
   bool eliminatedMatrix(const Elimination& e, Teuchos::RCP<CrsMatrix>& A, MultiVector& rhs) const;
-
-  /// The RT face DOFs of one contact face and the map between their point values and the
-  /// face's constraint coefficients: traction t(x_q) = Σ_p V(q,p) τ_p, dual ρ_p = Σ_q V(q,p) r_q.
-  struct ContactFace {
-    int m = 0;                                   ///< DOF points (= constraint coefficients)
-    std::vector<std::array<long long, 3>> gids;  ///< per point q: the d row DOFs
-    std::vector<double> scale;                   ///< s_q: traction = s_q × coefficient
-    std::vector<double> V, Vinv;                 ///< m × m, row-major V[q*m + p]
-    double meanScale = 0.0;                      ///< mean |s_q|
-  };
 
   const disc::MixedElasticitySpace& space_;
   ContactSettings settings_;

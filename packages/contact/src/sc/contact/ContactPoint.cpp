@@ -1,10 +1,9 @@
 #include "sc/contact/ContactPoint.hpp"
 
-#include "sc/contact/Bernstein.hpp"
+#include <cmath>
 
 #include <sc/core/Error.hpp>
-
-#include <cmath>
+#include <sc/disc/Bernstein.hpp>
 
 namespace sc::contact {
 
@@ -67,8 +66,8 @@ std::vector<PointValues> pointValues(const std::vector<ContactPoint>& points, in
     if (f.size() <= index) f.resize(index + 1, points.size());
     f[index] = i;
   }
-  const auto alphas =
-      bernsteinCoefficients ? bernsteinIndices(degree, dim) : std::vector<std::array<int, 3>>();
+  const auto alphas = bernsteinCoefficients ? disc::bernsteinIndices(degree, dim)
+                                            : std::vector<std::array<int, 3>>();
   for (const auto& [block, members] : faces) {
     SC_THROW_IF(bernsteinCoefficients && members.size() != alphas.size(), core::InternalError,
                 "contact::pointValues: face block " << block << " has " << members.size()
@@ -89,7 +88,7 @@ std::vector<PointValues> pointValues(const std::vector<ContactPoint>& points, in
           lambda[i] = alphas[p][i] / static_cast<double>(degree);
         double sigmaN = 0.0;
         for (std::size_t q = 0; q < members.size(); ++q) {
-          const double b = bernstein(alphas[q], lambda, degree);
+          const double b = disc::bernstein(alphas[q], lambda, degree);
           const ContactPoint& cq = points[members[q]];
           sigmaN += b * cq.sigmaN;
           v.sigmaT[0] += b * cq.sigmaT[0];

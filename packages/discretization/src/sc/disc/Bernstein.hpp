@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-namespace sc::contact {
+namespace sc::disc {
 
 /// Multi-indices α (|α| = k) over `nv` barycentric coordinates, in the order of a face's
 /// constraint points.
@@ -32,4 +32,13 @@ inline double bernstein(const std::array<int, 3>& alpha, const std::array<double
   return f;
 }
 
-}  // namespace sc::contact
+/// Barycentric coordinates of y in the face with vertices v[0..d-1] (an edge in 2D, a triangle in
+/// 3D; y on the face's line or plane).
+std::array<double, 3> faceBarycentric(const std::array<const double*, 3>& v, const double* y,
+                                      int d);
+
+/// Inverse of a face's small Bernstein collocation matrix (n × n, row-major), by LAPACK through
+/// Teuchos; InternalError if it is singular.
+std::vector<double> invertCollocation(const std::vector<double>& a, int n);
+
+}  // namespace sc::disc
