@@ -76,7 +76,10 @@ TEUCHOS_UNIT_TEST(OutputDirectory, CreatesNestedDirectories)
   TEST_ASSERT(std::filesystem::is_directory(dir));
   TEST_EQUALITY(std::distance(std::filesystem::directory_iterator(dir),
                               std::filesystem::directory_iterator()),
-                0);                           // the writability probe is removed
+                0);  // the writability probe is removed
+  // Every rank has looked before rank 0 probes the directory again: the second call's probe file
+  // would otherwise stand in the directory while a slower rank counts its entries.
+  comm->barrier();
   sc::io::createOutputDirectory(dir, *comm);  // existing directory: fine
 }
 

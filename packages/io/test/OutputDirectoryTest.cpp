@@ -16,11 +16,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh directory per rank (the test runs at 1, 2 and 4 ranks; each rank works alone).
+// A fresh directory per rank count and rank: each rank works alone, and the _np1/_np2/_np4 tests
+// share one working directory and run side by side when ctest -j has room for both. Named by the
+// rank alone, rank 0 of the 1-rank and of the 2-rank test would share a directory and empty it
+// under each other.
 std::string freshDirectory(const std::string& name)
 {
-  const int rank = Teuchos::DefaultComm<int>::getComm()->getRank();
-  const std::string dir = "output_directory_test_" + name + "_r" + std::to_string(rank);
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const std::string dir = "io_test_np" + std::to_string(comm->getSize()) + "/output_directory_" +
+                          name + "_r" + std::to_string(comm->getRank());
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
