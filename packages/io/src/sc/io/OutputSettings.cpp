@@ -48,17 +48,25 @@ OutputSettings::OutputSettings(const Teuchos::ParameterList& outputSublist)
                 "Invalid parameter in sublist \"" << sublistName << "\":\n"
                                                   << e.what());
   }
-  directory = pl.get<std::string>("Directory");
-  baseName = pl.get<std::string>("Base name");
-  writeXdmf = pl.get<bool>("Write XDMF");
-  writeContactCsv = pl.get<bool>("Write contact CSV");
+  *this = fromParameters(pl);
+}
+
+OutputSettings OutputSettings::fromParameters(const Teuchos::ParameterList& validatedOutput)
+{
+  const Teuchos::ParameterList& pl = validatedOutput;
+  OutputSettings s{Unread{}};
+  s.directory = pl.get<std::string>("Directory");
+  s.baseName = pl.get<std::string>("Base name");
+  s.writeXdmf = pl.get<bool>("Write XDMF");
+  s.writeContactCsv = pl.get<bool>("Write contact CSV");
   const auto point = pl.get<Teuchos::Array<double>>("Moment point");
-  std::copy(point.begin(), point.end(), momentPoint.begin());
-  SC_THROW_IF(directory.empty(), sc::core::InputError,
+  std::copy(point.begin(), point.end(), s.momentPoint.begin());
+  SC_THROW_IF(s.directory.empty(), sc::core::InputError,
               "Output/Directory is empty; give a directory such as \"output\"");
-  SC_THROW_IF(baseName.empty() || baseName.find('/') != std::string::npos, sc::core::InputError,
-              "Output/Base name = \"" << baseName
+  SC_THROW_IF(s.baseName.empty() || s.baseName.find('/') != std::string::npos, sc::core::InputError,
+              "Output/Base name = \"" << s.baseName
                                       << "\" is not valid: give a non-empty file name without '/'");
+  return s;
 }
 
 }  // namespace sc::io
