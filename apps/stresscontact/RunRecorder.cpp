@@ -230,4 +230,28 @@ void RunRecorder::write()
   io::writeHistory(comm_, directory_, summary_.json()["cycles"], dim_, hasContact_);
 }
 
+std::string RunRecorder::recordStop(const std::string& stopReason,
+                                    const adapt::AdaptivitySettings& adaptivity)
+{
+  // Why the run stopped, and with accuracy targets or a time budget whether the targets were
+  // met (docs/adaptivity.md "Accuracy targets and a time budget").
+  auto& stop = summary_.json()["stop"];
+  stop = {{"reason", stopReason}};
+  std::string outcome;
+  if (adaptivity.hasQuantityTargets() || adaptivity.timeBudget > 0.0) {
+    const bool met = stopReason.rfind("accuracy targets met", 0) == 0;
+    const bool budget = stopReason.rfind("time budget", 0) == 0;
+    stop["accuracy_targets_met"] = adaptivity.hasQuantityTargets()
+                                       ? nlohmann::ordered_json(met)
+                                       : nlohmann::ordered_json(nullptr);
+    stop["time_budget_reached"] = budget;
+    outcome = met      ? " (accuracy targets met)"
+              : budget ? (adaptivity.hasQuantityTargets()
+                              ? " (best within the time budget; accuracy targets not met)"
+                              : " (best within the time budget)")
+                       : (adaptivity.hasQuantityTargets() ? " (accuracy targets not met)" : "");
+  }
+  return outcome;
+}
+
 }  // namespace sc::app

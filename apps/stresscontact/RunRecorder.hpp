@@ -8,6 +8,7 @@
 #include <Teuchos_Comm.hpp>
 
 #include <sc/adapt/AdaptiveProblem.hpp>
+#include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/Timers.hpp>
 
@@ -39,6 +40,11 @@ public:
                   const core::PhaseTimers::PeakMemory& memory);
   /// summary.json, then history.csv from its cycle records (collective).
   void write();
+  /// Why the run stopped, into summary.json's "stop" record, and with accuracy targets or a time
+  /// budget whether the targets were met; returns the progress line's note on that ("" without
+  /// targets or budget).
+  std::string recordStop(const std::string& stopReason,
+                         const adapt::AdaptivitySettings& adaptivity);
 
 private:
   const Teuchos::Comm<int>& comm_;

@@ -5,6 +5,12 @@
 // cycle { refine, solve, estimate, (mark), output, checkpoint } until a stop criterion holds
 // (Cycles, Max DOFs, Target error, the memory forecast of the next mesh).
 //
+// Simulation.cpp holds the steps, one function each; what they rely on lives beside it: the
+// deck read once and its combinations checked (RunSettings.cpp), the scene checked against the
+// initial mesh (SimulationChecks.cpp), the load steps (SimulationLoadSteps.cpp), checkpoint and
+// restart (SimulationCheckpoint.cpp), and the output step's recorder and field writer
+// (RunRecorder.cpp, FieldWriter.cpp, from a CycleResults value).
+//
 // What each cycle does depends on what the scene needs (docs/theory.md): no contact machinery
 // without a Contact boundary, no friction rows when the law is None or μ_F = 0. Every scene is
 // estimated (η without contact, η_CF with the contact and friction parts) and can be refined by
@@ -21,17 +27,14 @@
 #include <Tpetra_MultiVector_fwd.hpp>
 
 #include <sc/adapt/AdaptiveProblem.hpp>
-#include <sc/adapt/AdaptivitySettings.hpp>
 #include <sc/contact/BalancedStopping.hpp>
 #include <sc/contact/ContactSettings.hpp>
-#include <sc/core/LoadSteps.hpp>
 #include <sc/core/Progress.hpp>
 #include <sc/core/ProblemData.hpp>
 #include <sc/core/Timers.hpp>
-#include <sc/estimator/EstimatorSettings.hpp>
-#include <sc/io/OutputSettings.hpp>
-#include <sc/mesh/MeshSettings.hpp>
 #include <sc/mesh/ResourceEstimate.hpp>
+
+#include "RunSettings.hpp"
 
 namespace sc::mesh {
 class SimplexMesh;
@@ -39,6 +42,7 @@ class BisectionRefiner;
 }  // namespace sc::mesh
 namespace sc::io {
 class CheckpointFile;
+class OutputLock;
 class RunSummary;
 class XdmfWriter;
 }  // namespace sc::io
@@ -72,10 +76,6 @@ namespace sc::app {
 
 struct CycleResults;
 class RunRecorder;
-
-/// A prescribed displacement above this fraction of the body's size (bounding-box diagonal)
-/// draws a small-strain warning.
-inline constexpr double kLargeDisplacementFraction = 0.05;
 
 class Simulation : public adapt::AdaptiveProblem {
 public:
@@ -120,19 +120,18 @@ private:
   /// checkpoint.h5, timed into summary.json's "checkpoint" phase.
   void checkpoint(int cycle, const adapt::Marking& marking) override;
 
-  /// Load step `step` (0-based, docs/theory.md §"Load steps"): the step's boundary values, body
-  /// force, obstacle position and formula time.
-  void applyLoadStep(int step);
+  /// The initial mesh (within the memory limit), the scene checked against it, and the contact
+  /// problem of a scene with contact.
   void setupMesh();
-  void warnIfLargeDisplacement() const;
+  /// The contact problem that lives across the cycles (`contactHoldsBody`: no support holds the
+  /// body along the obstacle's normal but the contact).
+  void setupContactProblem(bool contactHoldsBody);
   /// The cycle's assembly::MixedElasticitySystem: partition, spaces, assembled matrix.
   void setupElasticity();
   void solveElasticity();
   /// The stress-block multigrid levels for this cycle's space (empty without hierarchy_).
   std::vector<solvers::MultigridLevel> multigridLevels();
   void solveContact();
-  /// After a contact solve with no point in contact: a warning (once per run).
-  void warnIfNoContact();
   /// The solved cycle's DOFs, linear solver and contact state (with the Hertz comparison) into
   /// *results_.
   void recordSolve();
@@ -142,6 +141,33 @@ private:
   /// The reactions and force balance, the mesh record and (with XDMF output) the fields of the
   /// cycle into results_.
   void collectResults();
+
+  /// run(): the output directory taken (under `lock`) and emptied of an earlier run's files (a
+  /// restart: of the files after its checkpoint's cycle), summary.json, the recorder and the
+  /// field writer.
+  void openOutput(int firstCycle, const io::OutputLock& lock);
+
+  // The scene against the initial mesh (SimulationChecks.cpp).
+  /// Boundary names, supports, curved contact faces, the obstacle at every load step, an element
+  /// per rank, and the warnings; returns whether only the contact holds the body along the
+  /// obstacle's normal.
+  bool checkSceneOnMesh();
+  void checkObstacleAtEveryLoadStep();
+  void warnIfLargeDisplacement() const;
+  /// After a contact solve with no point in contact: a warning (once per run).
+  void warnIfNoContact();
+
+  // Load steps (SimulationLoadSteps.cpp; docs/theory.md §"Load steps").
+  /// Load step `step` (0-based): the step's boundary values, body force, obstacle position and
+  /// formula time become current.
+  void applyLoadStep(int step);
+  /// The load steps from resume_ (the first, or a checkpoint's), each an adaptive loop from
+  /// cycle `firstCycle` with the checkpoint's `marked` elements when it continues a step;
+  /// returns the last loop's stop reason.
+  std::string runLoadSteps(int firstCycle, std::vector<int> marked);
+  /// The current cycle's load step, its prescribed values and the 2D stick zone's ends into its
+  /// summary record.
+  void recordLoadStep();
 
   // Checkpoint/restart (SimulationCheckpoint.cpp; docs/adaptivity.md "Checkpoint and restart").
   /// Collective: after cycle `cycle` is complete (summary written), write checkpoint.h5 with the
@@ -165,21 +191,15 @@ private:
   Teuchos::RCP<Teuchos::ParameterList> params_;
   std::string deckPath_;
 
-  // Scene data and method settings (read once, in the constructor).
-  core::ProblemSettings problem_;
-  mesh::MeshSettings meshSettings_;
-  core::Material material_;
-  core::BoundaryConditions boundaryConditions_;  ///< of the current load step
-  core::BodyForce bodyForce_;  ///< "Body Force" (f = 0 when not given), of the current load step
-  contact::ContactSettings contact_;  ///< the obstacle at the current load step
-  /// Load steps: the times and per-step data; the deck's conditions, body force and contact
-  /// settings from which each step's are made; the current step (0-based).
-  core::LoadSteps loadSteps_;
-  core::BoundaryConditions deckConditions_;
-  core::BodyForce deckBodyForce_;
-  contact::ContactSettings deckContact_;
+  /// The deck, read once (RunSettings.hpp).
+  RunSettings settings_;
+
+  // The current load step: its conditions, body force and contact settings (the obstacle at the
+  // step), its number (0-based) and the (run-wide) number of its first cycle.
+  core::BoundaryConditions boundaryConditions_;
+  core::BodyForce bodyForce_;
+  contact::ContactSettings contact_;
   int loadStep_ = 0;
-  /// The (run-wide) number of the current load step's first cycle.
   int stepFirstCycle_ = 0;
   /// Where run() starts (a restart: the checkpoint's load step): the step, the number of its
   /// first cycle, and whether the first cycle run starts that step (its friction history is
@@ -193,13 +213,6 @@ private:
   std::unique_ptr<adapt::AdaptiveLoop> laterStepLoop_;
   bool warnedNoContact_ = false;
   int lastCycle_ = -1;  ///< the last cycle output (numbered through the load steps)
-  /// The frictionless Hertz scenes (Mesh/Source = Half disc or Half ball): their radius, for the
-  /// comparison with Hertz's values; none otherwise.
-  std::optional<double> hertzRadius_;
-  core::DiscretizationSettings discretization_;
-  estimator::EstimatorSettings estimatorSettings_;
-  adapt::AdaptivitySettings adaptivity_;
-  io::OutputSettings output_;
 
   core::Progress progress_;
   core::PhaseTimers timers_;
@@ -225,8 +238,6 @@ private:
   /// contact: the meshes of the run (initial mesh and every refinement, or the restored mesh
   /// after a restart), from which the multigrid levels are chosen each cycle; null otherwise.
   std::unique_ptr<solvers::StressHierarchy> hierarchy_;
-  /// What the Linear Solver list means for this scene (hierarchy, Auto choice), decided once.
-  std::unique_ptr<solvers::SolverPolicy> solverPolicy_;
   /// Linear Solver/Type = Auto: solver_ is chosen per cycle; autoType_ = its resolved Type.
   std::string autoType_;
   std::vector<int> linearIterations_;  // Krylov iterations per solve of the current cycle

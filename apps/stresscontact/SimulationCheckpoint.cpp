@@ -125,7 +125,7 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
   // r_T^{n-1} with its weight and centroid (ActiveSetSolver::transferState places it on refined
   // faces), and its r_T and tangents (contact::commitLoadStep makes them the next step's
   // history). All exact doubles: the restarted run computes the same numbers.
-  const int d = problem_.dimension;
+  const int d = settings_.problem.dimension;
   std::vector<double> mine;
   static const std::vector<contact::ContactPoint> none;
   for (const auto& p : contactProblem_ ? contactProblem_->points() : none) {
@@ -159,7 +159,7 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
     // The load step of this cycle (0-based), its time, the number of its first cycle, and
     // whether this cycle was its last (the next cycle starts the next step).
     cp.setInts("load_step", {loadStep_});
-    cp.setDoubles("load_step_time", {loadSteps_.times[loadStep_]});
+    cp.setDoubles("load_step_time", {settings_.loadSteps.times[loadStep_]});
     cp.setInts("load_step_first_cycle", {stepFirstCycle_});
     cp.setInts("load_step_complete", {stepComplete ? 1 : 0});
 
@@ -191,7 +191,7 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
       for (const auto& st : writer_->steps())
         steps.push_back({{"cycle", st.cycle}, {"time", st.time}, {"xml", st.xml}});
     cp.setString("xdmf_steps", steps.dump());
-    cp.write(checkpointPath(output_.directory));
+    cp.write(checkpointPath(settings_.output.directory));
   });
 }
 
@@ -208,8 +208,8 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     std::error_code ec;
     const bool killedInCycleZero =
         !fs::exists(path, ec) &&
-        (fs::exists(dir / (output_.baseName + "_c0000.h5"), ec) ||
-         fs::exists(dir / (output_.baseName + ".xdmf"), ec) ||
+        (fs::exists(dir / (settings_.output.baseName + "_c0000.h5"), ec) ||
+         fs::exists(dir / (settings_.output.baseName + ".xdmf"), ec) ||
          fs::exists(dir / "contact_cycle0.csv", ec) || fs::exists(dir / "summary.json", ec));
     if (killedInCycleZero) {
       progress_.message("restart: " + restartDirectory_ +
@@ -261,15 +261,15 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   const int step = static_cast<int>(scalar("load_step"));
   const int stepFirstCycle = static_cast<int>(scalar("load_step_first_cycle"));
   const bool stepComplete = scalar("load_step_complete") != 0;
-  if (step < 0 || step >= loadSteps_.numSteps())
+  if (step < 0 || step >= settings_.loadSteps.numSteps())
     bad("is of load step " + std::to_string(step + 1) + ", but 'Load steps/Times' has " +
-        std::to_string(loadSteps_.numSteps()) + " step(s)");
+        std::to_string(settings_.loadSteps.numSteps()) + " step(s)");
   if (cp.doubles("load_step_time").size() != 1 ||
-      cp.doubles("load_step_time")[0] != loadSteps_.times[step])
+      cp.doubles("load_step_time")[0] != settings_.loadSteps.times[step])
     bad("is of load step " + std::to_string(step + 1) +
         " at another time than 'Load steps/Times' gives it");
   if (stepFirstCycle < 0 || stepFirstCycle > cycle || (step == 0 && stepFirstCycle != 0) ||
-      (stepComplete && step + 1 >= loadSteps_.numSteps()))
+      (stepComplete && step + 1 >= settings_.loadSteps.numSteps()))
     bad("has load step records that do not fit together (damaged)");
 
   // The mesh of that cycle, with the state the refiner needs to go on exactly as before.
@@ -295,7 +295,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   mesh_ = refiner_->mesh();
   if (hierarchy_) {
     // The meshes before the checkpoint are not stored: the hierarchy restarts from this one.
-    hierarchy_ = std::make_unique<solvers::StressHierarchy>(discretization_.degree, comm_);
+    hierarchy_ = std::make_unique<solvers::StressHierarchy>(settings_.discretization.degree, comm_);
     hierarchy_->addMesh(mesh_, {});
   }
   if (mesh_->numElements() != scalar("mesh_elements") ||
@@ -307,7 +307,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
     if (e < 0 || e >= mesh_->numElements())
       bad("marks an element that its mesh does not have (damaged)");
 
-  const int d = problem_.dimension;
+  const int d = settings_.problem.dimension;
   const auto& points = cp.doubles("contact_points");
   const int stride = contactPointStride(d);
   if (scalar("contact_point_stride") != stride || points.size() % stride != 0)
@@ -386,9 +386,9 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
   std::ostringstream os;
   os << "restart from " << path << ": cycle " << cycle << " complete (" << mesh_->numElements()
      << " elements, " << marked.size() << " marked), continuing with cycle " << cycle + 1;
-  if (loadSteps_.numSteps() > 1)
+  if (settings_.loadSteps.numSteps() > 1)
     os << (stepComplete ? ", which starts load step " : " in load step ") << resume_.step + 1
-       << " of " << loadSteps_.numSteps();
+       << " of " << settings_.loadSteps.numSteps();
   if (ranksBefore != comm_->getSize())
     os << "; written on " << ranksBefore << " rank(s), now " << comm_->getSize()
        << ": the cycles after it match a run on " << comm_->getSize()
@@ -405,7 +405,8 @@ void Simulation::restoreOutputs()
   summary_->json()["cycles"] = std::move(cycles);
   summary_->json()["restart"] = {{"checkpoint_cycle", cycle},
                                  {"ranks_before", cp.ints("ranks")[0]}};
-  if (loadSteps_.given)  // the load step of the checkpoint's cycle (1-based, as load_step/step)
+  if (settings_.loadSteps
+          .given)  // the load step of the checkpoint's cycle (1-based, as load_step/step)
     summary_->json()["restart"]["checkpoint_load_step"] = cp.ints("load_step")[0] + 1;
   if (writer_) {
     std::vector<io::XdmfWriter::Step> steps;
@@ -416,8 +417,8 @@ void Simulation::restoreOutputs()
   }
   // history.csv holds the restored cycles only (the killed run may have written a row after its
   // last checkpoint).
-  io::writeHistory(*comm_, output_.directory, summary_->json()["cycles"], problem_.dimension,
-                   boundaryConditions_.hasContact());
+  io::writeHistory(*comm_, settings_.output.directory, summary_->json()["cycles"],
+                   settings_.problem.dimension, boundaryConditions_.hasContact());
   checkpoint_.reset();
 }
 
