@@ -1,9 +1,12 @@
 """Load-step runs of the application (docs/theory.md "Load steps", docs/contact.md "Load steps").
 
     python3 LoadSteps.py --app stresscontact --ranks N --case CASE --deck DECK --out DIR
+                         [--expected FILE]
                          [--set KEY=VALUE ...] [--kill-cycle K] [--set-checkpoint-int TOOL]
 
-Runs the deck on N ranks into DIR (emptied first) and checks its summary.json:
+Runs the deck on N ranks into DIR (emptied first) and checks its summary.json. The stored
+numbers, the peer's tolerances and their sources are in the --expected file of the deck
+(tests/expected/<deck>_<variant>.json, "values": name, value, relative tolerance):
 
 cattaneo-mindlin  the Hertz half disc (nu = 0.4999, mu_F = 0.4) pressed (step 1), then moved
                   sideways (step 2). Analytic: Johnson, Contact Mechanics (1985) §7.1, for a
@@ -16,7 +19,8 @@ cattaneo-mindlin  the Hertz half disc (nu = 0.4999, mu_F = 0.4) pressed (step 1)
                   friction, read from docs/peer/cattaneo_mindlin2d_primal.csv (docs/peer/README.md;
                   measured -7.1e-4, -5.9e-4, -0.007 a, +0.026 a). Stored: the final P, Q and stick
                   half-width of a 1-rank run of the shipped deck (2026-12-03), to 1e-8 at every
-                  rank count.
+                  rank count (tests/expected/cattaneo_mindlin2d_default.json, with the peer's
+                  tolerances).
 mindlin-deresiewicz  input/mindlin_deresiewicz2d.xml: pressed (step 1), moved sideways to Q* about
                   mu_F P/2 (step 2), back half way (step 3: partial unloading) and on to -delta*
                   (step 4). Analytic: Johnson, Contact Mechanics (1985) §7.3 (Mindlin-Deresiewicz
@@ -38,7 +42,8 @@ mindlin-deresiewicz  input/mindlin_deresiewicz2d.xml: pressed (step 1), moved si
                   Peer: P, Q and the stick zone's ends of steps 2-4 against the primal GetFEM
                   computation of the same steps (md_peer_comparison; measured P -7.9e-4, Q within
                   6.9e-4 Q*, ends within 0.044 a; the peer's Q(-delta*)/Q* is -1.0040).
-                  Stored: Q of steps 3 and 4 and their stick half-widths (1 rank, 2026-12-03), 1e-8.
+                  Stored: Q of steps 3 and 4 and their stick half-widths (1 rank, 2026-12-03), 1e-8
+                  (tests/expected/mindlin_deresiewicz2d_default.json).
 loop              input/mindlin_deresiewicz_loop2d.xml: pressed (step 1), moved sideways to delta*
                   (Q* about mu_F P/2) in n steps of h = delta*/n, back to -delta* and forth to
                   +delta* in steps of 2h (the run's steps must be so; n from the summary), so that
@@ -74,7 +79,7 @@ loop              input/mindlin_deresiewicz_loop2d.xml: pressed (step 1), moved 
                   loading step's slip zone, +-0.940 a and +-0.879 a against 0.934 and 0.863, and
                   shifted after, like the loading step's: not checked.) Stored: Q*,
                   Q(-delta*) and Q(+delta*) after reloading (1 rank, 2026-12-03), 1e-8, per variant
-                  (--variant). With --peer (the shipped deck): Q of every step within 1.5e-3 Q* of
+                  (--variant; tests/expected/mindlin_deresiewicz_loop2d_<variant>.json). With --peer (the shipped deck): Q of every step within 1.5e-3 Q* of
                   the primal GetFEM computation of the 13 steps (loop_peer_comparison; measured
                   6.3e-4 Q* at most), whose own deviations from Masing are this run's to 2e-4 Q*.
 incremental       input/hertz2d_incremental.xml (the Hertz half disc of input/hertz2d.xml, nu = 0.28,
@@ -91,7 +96,8 @@ incremental       input/hertz2d_incremental.xml (the Hertz half disc of input/he
                   with three or more N >= 5 the area-based ratio growing with N by shrinking
                   differences (measured 0.849, 0.895, 0.905 for N = 5, 20, 40, and 0.905 at
                   N = 80). Stored: the final P and stick half-width of each N (1 rank,
-                  2026-12-03, the deck's 11 refinement sweeps), 1e-8.
+                  2026-12-03, the deck's 11 refinement sweeps), 1e-8
+                  (tests/expected/hertz2d_incremental_steps.json).
 failed-step       the same deck with a Newton limit that step 1 meets and step 2 does not (its
                   first cycle needs 7 steps): exit status 2, summary.json names the failed step
                   (failed_load_step = 2), says converged = false, and keeps every cycle of step 1
@@ -121,21 +127,30 @@ import shutil
 import subprocess
 import sys
 
-# The final cycle of the shipped deck on 1 rank (stored; every rank count must give them).
-STORED_CATTANEO = {"P": 147.59861012889849, "Q": 29.51683864909573, "stick": 0.05978696799024484}
-# Tolerances against the primal peer (docs/peer/README.md "Cattaneo-Mindlin"; peer_comparison).
-PEER_FORCE_TOL, PEER_END_TOL = 1.5e-3, 0.04
-# The last cycle of input/hertz2d_incremental.xml in N steps on 1 rank (stored): P, stick half-width.
-STORED_INCREMENTAL = {1: (108.08360475185899, 0.03565746415807734), 5: (107.84258211784737, 0.06553063355509578),
-                      20: (107.82286402753655, 0.06935684849278971), 40: (107.82142319409077, 0.06935684849278971)}
-# The last cycles of steps 3 and 4 of input/mindlin_deresiewicz2d.xml on 1 rank (stored).
-STORED_MINDLIN_DERESIEWICZ = {"Q3": 14.404558708915848, "stick3": 0.07738832523363989,
-                              "Q4": -29.63533749371656, "stick4": 0.05519472483225169}
 
-# The last cycles of steps 5, 9 and 13 of input/mindlin_deresiewicz_loop2d.xml on 1 rank (stored):
-# Q*, Q(-delta*), Q(+delta*) after reloading; "shipped" as shipped, "coarse" with COARSE_LOOP_SETS.
-STORED_LOOP = {"shipped": {"Qstar": 29.51679668740009, "Qrev": -29.640730020921943, "Qend": 29.635713183715705},
-               "coarse": {"Qstar": 29.499485319466253, "Qrev": -29.590057691430673, "Qend": 29.640093915602016}}
+def read_expected(path):
+    """The --expected file: its "values" by name, and the whole file (for "peer"). Every file and
+    every block of tolerances names the source of its numbers."""
+    with open(path) as f:
+        expected = json.load(f)
+    if not expected.get("source"):
+        sys.exit(f"{path}: no 'source' for its numbers")
+    if "peer" in expected and not expected["peer"].get("source"):
+        sys.exit(f"{path}: no 'source' for the peer's tolerances")
+    return {v["name"]: v for v in expected.get("values", [])}, expected
+
+
+def check_stored(checks, stored, name, value, label=None):
+    """value against the stored value `name` of the --expected file, within its relative tolerance."""
+    entry = stored.get(name)
+    if entry is None:
+        checks.check(False, f"{label or name} = {value!r}: no stored value '{name}' in the --expected file")
+        return
+    ref, tol = entry["value"], entry["tolerance"]
+    checks.check(abs(value - ref) <= tol * abs(ref),
+                 f"{label or name} = {value!r} against the stored {ref!r} ({tol:g})")
+
+
 # The cheap variant of the loop (the default suite): fewer cycles in step 1, none in later steps.
 COARSE_LOOP_SETS = ["Adaptivity/Cycles=6", "Load steps/Cycles per later step=0"]
 # Tolerances of the loop case (see the top).
@@ -266,7 +281,7 @@ def stick_zone_from_csv(directory, cycle):
     return [0.5 * (lo + max(below)) if below else lo, 0.5 * (hi + min(above)) if above else hi]
 
 
-def cattaneo_mindlin(summary, mu, checks, directory):
+def cattaneo_mindlin(summary, mu, checks, directory, expected):
     first, second = last_of_step(summary, 1), last_of_step(summary, 2)
     checks.check(summary.get("converged") is True, "the run converged")
     checks.check(first is not None and second is not None, "summary.json has cycles of steps 1 and 2")
@@ -291,21 +306,22 @@ def cattaneo_mindlin(summary, mu, checks, directory):
     csv_ends = stick_zone_from_csv(directory, second["cycle"])
     checks.check(all(abs(e - r) <= 1e-12 * a for e, r in zip(ends, csv_ends)),
                  f"stick_zone_ends {ends} are those of the contact CSV's stick points {csv_ends} (1e-12 a)")
-    peer_comparison(P, Q, a, ends, checks)
+    stored, whole = expected
+    peer_comparison(P, Q, a, ends, checks, whole["peer"])
     for key, value in (("P", P), ("Q", Q), ("stick", c)):
-        stored = STORED_CATTANEO[key]
-        checks.check(abs(value - stored) <= 1e-8 * abs(stored),
-                     f"{key} = {value!r} against the stored {stored!r} (1e-8)")
+        check_stored(checks, stored, key, value)
 
 
-def peer_comparison(P, Q, a, ends, checks):
+def peer_comparison(P, Q, a, ends, checks, tolerances):
     """The end of step 2 against the independent primal computation with incremental Coulomb
     friction (GetFEM, Taylor-Hood P2/P1 isoparametric, level 3: docs/peer/README.md
     "Cattaneo-Mindlin", values read from docs/peer/cattaneo_mindlin2d_primal.csv). P and Q within
-    PEER_FORCE_TOL (the peer's own spread: Taylor-Hood against pure P2, docs/peer/README.md), the
-    stick zone's two ends within PEER_END_TOL a: this run's contact points are 0.0031 = 0.037 a
+    force_tolerance (the peer's own spread: Taylor-Hood against pure P2, docs/peer/README.md), the
+    stick zone's two ends within end_tolerance a: this run's contact points are 0.0031 = 0.037 a
     apart at the ends (its ends are midway between points), the peer's nodes 0.001 = 0.012 a.
-    Measured: P -7.1e-4, Q -5.9e-4; ends -0.007 a and +0.026 a."""
+    Measured: P -7.1e-4, Q -5.9e-4; ends -0.007 a and +0.026 a. The tolerances are the "peer"
+    block of the --expected file."""
+    PEER_FORCE_TOL, PEER_END_TOL = tolerances["force_tolerance"], tolerances["end_tolerance"]
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
                         "cattaneo_mindlin2d_primal.csv")
     with open(path) as f:
@@ -349,7 +365,7 @@ def interpolate(table, x):
     return None
 
 
-def mindlin_deresiewicz(summary, out, mu, E, nu, checks):
+def mindlin_deresiewicz(summary, out, mu, E, nu, checks, expected):
     checks.check(summary.get("converged") is True, "the run converged")
     steps = [last_of_step(summary, n) for n in (1, 2, 3, 4)]
     checks.check(all(c is not None for c in steps), "summary.json has cycles of steps 1 to 4")
@@ -416,25 +432,23 @@ def mindlin_deresiewicz(summary, out, mu, E, nu, checks):
         checks.check(count >= 10 and worst <= 0.05 * mu * p0,
                      f"step {n}: q - q* against Mindlin-Deresiewicz at {count} points (>= 10): max deviation "
                      f"{worst / (mu * p0):.4f} mu_F p0 (<= 0.05)")
-    md_peer_comparison(steps, out, checks)
+    md_peer_comparison(steps, out, checks, expected[1]["peer"])
+    stored, _ = expected
     for key, value in values.items():
-        stored = STORED_MINDLIN_DERESIEWICZ[key]
-        if stored is None:
-            print(f"{key} = {value!r} (no stored value yet)")
-            checks.failed += 1
-            continue
-        checks.check(abs(value - stored) <= 1e-8 * abs(stored), f"{key} = {value!r} against the stored {stored!r} (1e-8)")
+        check_stored(checks, stored, key, value)
 
 
-def md_peer_comparison(steps, out, checks):
+def md_peer_comparison(steps, out, checks, tolerances):
     """Steps 2-4 of input/mindlin_deresiewicz2d.xml against the primal GetFEM computation with
     incremental friction of the same steps (docs/peer/README.md "Mindlin-Deresiewicz", values
     read from docs/peer/mindlin_deresiewicz2d_primal.csv, its finest level): P, and Q (the top's
-    reaction along x) within PEER_FORCE_TOL of P and of Q* (the tolerances of peer_comparison).
+    reaction along x) within force_tolerance of P and of Q* (the "peer" block of the --expected
+    file, the tolerance of peer_comparison).
     Each end of the stick zone within this run's point spacing at that end (from the contact CSV;
     0.0061 = 0.074 a at most ends of this coarser deck) plus the peer's node spacing h_min: both
     codes put an end midway between two points, so each is within half its spacing of its
     discrete zone's end."""
+    PEER_FORCE_TOL = tolerances["force_tolerance"]
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
                         "mindlin_deresiewicz2d_primal.csv")
     with open(path) as f:
@@ -468,11 +482,13 @@ def md_peer_comparison(steps, out, checks):
                          f"({(value - r) / a:+.4f} a, <= {tol / a:.4f} a: spacing {spacing / a:.4f} a + the peer's "
                          f"{float(ref['h_min']) / a:.4f} a)")
 
-def loop_peer_comparison(pts, n, checks):
+def loop_peer_comparison(pts, n, checks, tolerances):
     """Every step of the loop against the primal GetFEM computation of the same 13 steps
     (docs/peer/README.md "Mindlin-Deresiewicz loop", docs/peer/mindlin_deresiewicz_loop2d_primal.csv,
-    its finest level): Q within PEER_FORCE_TOL Q* (the tolerance of peer_comparison), and the
-    peer's own deviations from Masing's construction printed beside this run's."""
+    its finest level): Q within force_tolerance Q* (the "peer" block of the --expected file, the
+    tolerance of peer_comparison), and the peer's own deviations from Masing's construction
+    printed beside this run's."""
+    PEER_FORCE_TOL = tolerances["force_tolerance"]
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
                         "mindlin_deresiewicz_loop2d_primal.csv")
     with open(path) as f:
@@ -507,7 +523,7 @@ def fit_compliance(rows):
     return L, B, max(abs(L * x + B * g - d) for x, g, d in rows)
 
 
-def loop(summary, mu, E, nu, checks, variant, zone_ends, peer=False):
+def loop(summary, mu, E, nu, checks, zone_ends, expected, peer=False):
     """The Mindlin-Deresiewicz hysteresis loop (see the top): Masing's construction from the
     computed loading branch, the loop's closure and symmetry, and its shape against Johnson's
     plane-strain compliance without the datum's linear term."""
@@ -586,19 +602,13 @@ def loop(summary, mu, E, nu, checks, variant, zone_ends, peer=False):
                              f"reloading at x = {d / dstar:+.2f} delta*: the stick zone's {side} end {end / a:+.4f} a "
                              f"against Johnson's {ref / a:+.4f} a (+- {ENDS_TOL} a)")
     if peer:
-        loop_peer_comparison(pts, n, checks)
-    stored = STORED_LOOP[variant]
-    values = {"Qstar": qstar, "Qrev": qrev, "Qend": qend}
-    for key, value in values.items():
-        if stored is None:
-            print(f"{key} = {value!r} (no stored value yet)")
-            checks.failed += 1
-            continue
-        checks.check(abs(value - stored[key]) <= 1e-8 * abs(stored[key]),
-                     f"{key} = {value!r} against the stored {stored[key]!r} (1e-8)")
+        loop_peer_comparison(pts, n, checks, expected[1]["peer"])
+    stored, _ = expected
+    for key, value in {"Qstar": qstar, "Qrev": qrev, "Qend": qend}.items():
+        check_stored(checks, stored, key, value)
 
 
-def incremental(args, checks):
+def incremental(args, checks, expected):
     """input/hertz2d_incremental.xml in N equal steps for each N of args.steps (see the top)."""
     results = {}
     base = args.out
@@ -615,10 +625,9 @@ def incremental(args, checks):
         steps_newton = [c["contact"]["newton_iterations"] for c in summary["cycles"]]
         print(f"N = {n}: P = {k['force'][1]!r}, c/a = {results[n][1]:.4f} (outermost points), "
               f"{results[n][2]:.4f} (areas); Newton steps {steps_newton}")
-        stored = STORED_INCREMENTAL.get(n)
-        if stored is not None:
-            for name, value, ref in (("P", k["force"][1], stored[0]), ("stick half-width", k["stick_half_width"], stored[1])):
-                checks.check(abs(value - ref) <= 1e-8 * abs(ref), f"N = {n}: {name} = {value!r} against the stored {ref!r} (1e-8)")
+        stored, _ = expected
+        for key, name, value in ((f"P{n}", "P", k["force"][1]), (f"stick{n}", "stick half-width", k["stick_half_width"])):
+            check_stored(checks, stored, key, value, f"N = {n}: {name}")
     args.out = base
     if 1 in results:
         checks.check(abs(results[1][1] - 0.46) <= 0.02, f"N = 1: c/a = {results[1][1]:.4f} against the static 0.46 (+- 0.02)")
@@ -646,30 +655,36 @@ def main():
     parser.add_argument("--set", action="append", default=[], dest="sets")
     parser.add_argument("--kill-cycle", type=int, default=13)
     parser.add_argument("--variant", choices=["shipped", "coarse"], default="shipped",
-                        help="loop: which stored values (the deck as shipped, or with COARSE_LOOP_SETS)")
+                        help="loop: the deck as shipped, or with COARSE_LOOP_SETS (each has its --expected file)")
     parser.add_argument("--peer", action="store_true",
                         help="loop: compare Q of every step with docs/peer/mindlin_deresiewicz_loop2d_primal.csv")
     parser.add_argument("--zone-ends", action="store_true",
                         help="loop: check the stick zone's ends on the reloading branch (a deck refined in each step)")
     parser.add_argument("--set-checkpoint-int", help="tests/tools/set_checkpoint_int (restart-errors)")
+    parser.add_argument("--expected", help="the stored numbers (tests/expected/<deck>_<variant>.json)")
     args = parser.parse_args()
     checks = Checks()
+    expected = None
+    if args.case in ("cattaneo-mindlin", "restart", "mindlin-deresiewicz", "incremental", "loop"):
+        if not args.expected:
+            parser.error(f"--case {args.case} needs --expected")
+        expected = read_expected(args.expected)
     if args.case == "restart":
-        cattaneo_mindlin(restart(args, checks), 0.4, checks, args.out)
+        cattaneo_mindlin(restart(args, checks), 0.4, checks, args.out, expected)
     elif args.case == "restart-errors":
         restart_errors(args, checks)
     elif args.case == "cattaneo-mindlin":
-        cattaneo_mindlin(run(args), 0.4, checks, args.out)
+        cattaneo_mindlin(run(args), 0.4, checks, args.out, expected)
     elif args.case == "incremental":
         if os.path.isdir(args.out):
             shutil.rmtree(args.out)
-        incremental(args, checks)
+        incremental(args, checks, expected)
     elif args.case == "loop":
         if args.variant == "coarse":
             args.sets = COARSE_LOOP_SETS + args.sets
-        loop(run(args, mpi=args.ranks > 1), 0.4, 20600.0, 0.4999, checks, args.variant, args.zone_ends, args.peer)
+        loop(run(args, mpi=args.ranks > 1), 0.4, 20600.0, 0.4999, checks, args.zone_ends, expected, args.peer)
     elif args.case == "mindlin-deresiewicz":
-        mindlin_deresiewicz(run(args), args.out, 0.4, 20600.0, 0.4999, checks)
+        mindlin_deresiewicz(run(args), args.out, 0.4, 20600.0, 0.4999, checks, expected)
     else:
         summary = run(args, 2)
         steps = [c.get("load_step", {}).get("step") for c in summary["cycles"]]

@@ -1,6 +1,6 @@
 # cmake -DAPP=stresscontact -DCOMPARE=compare_summaries -DMPIEXEC=mpiexec -DMPIFLAGS="a|b" -DNP=2
-#       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 [-DRTOL=1e-12] [-DATOL=0]
-#       [-DIGNORE="key|..."] [-DSAME_FILES=ON] [-DRESTART_NP=1] -P Restart.cmake
+#       -DDECK=deck.xml -DOUT=dir -DSETS="k=v|..." -DKILL_CYCLE=3 -DEXPECTED=file.json
+#       [-DRESTART_NP=1] -P Restart.cmake
 # Checkpoint/restart of an adaptive run (docs/adaptivity.md "Checkpoint and restart"):
 #   1. the deck uninterrupted into OUT/full;
 #   2. the same run killed (SIGKILL, SC_KILL_IN_CYCLE) in cycle KILL_CYCLE, after that cycle's
@@ -11,18 +11,48 @@
 # Then every per-cycle number of summary.json must agree with the uninterrupted run within RTOL
 # (compare_summaries), the XDMF series must list every cycle once, every cycle's .h5 and CSV must
 # be there and no temporary left, history.csv must have a row per cycle; with SAME_FILES the CSVs
-# and the .xdmf must be byte-identical, and history.csv too but for its seconds.
+# and the .xdmf must be byte-identical, and history.csv too but for its seconds. RTOL (1e-N),
+# ATOL (0 or 1e-N), the keys not compared (IGNORE) and SAME_FILES are the "compare" block of
+# EXPECTED (tests/expected/<deck>_restart*.json), with the source of the tolerances.
 # Finally the comparison is shown able to fail: one number changed by 1e-10 (relative) in a copy
 # of the restarted summary must be reported.
-foreach(v SETS MPIFLAGS IGNORE)
+foreach(v SETS MPIFLAGS)
   string(REPLACE "|" ";" ${v} "${${v}}")
 endforeach()
-if(NOT ATOL)
-  set(ATOL 0)
+file(READ "${EXPECTED}" expected)
+string(JSON source ERROR_VARIABLE noSource GET "${expected}" source)
+if(noSource OR source STREQUAL "")
+  message(FATAL_ERROR "${EXPECTED}: no 'source' for its tolerances")
 endif()
-if(NOT RTOL)
-  set(RTOL 1e-12)
+# A tolerance 1e-N as CMake reads it from JSON (1e-08, or 9.9999999999999998e-13 for 1e-12), back
+# to 1e-N; 0 stays 0.
+function(sc_power_of_ten out key)
+  string(JSON value GET "${expected}" compare ${key})
+  if(value MATCHES "^0$")
+    set(${out} 0 PARENT_SCOPE)
+  elseif(value MATCHES "^1(\\.0*)?e-0*([0-9]+)$")
+    set(${out} 1e-${CMAKE_MATCH_2} PARENT_SCOPE)
+  elseif(value MATCHES "^9\\.9999+[0-9]*e-0*([0-9]+)$")
+    math(EXPR n "${CMAKE_MATCH_1} - 1")
+    set(${out} 1e-${n} PARENT_SCOPE)
+  else()
+    message(FATAL_ERROR "${EXPECTED}: compare/${key} must be 0 or 1e-N, not ${value}")
+  endif()
+endfunction()
+sc_power_of_ten(RTOL rtol)
+sc_power_of_ten(ATOL atol)
+string(JSON SAME_FILES GET "${expected}" compare same_files)
+string(JSON n LENGTH "${expected}" compare ignore)
+set(IGNORE "")
+if(n GREATER 0)
+  math(EXPR lastIgnored "${n} - 1")
+  foreach(i RANGE ${lastIgnored})
+    string(JSON key GET "${expected}" compare ignore ${i})
+    list(APPEND IGNORE ${key})
+  endforeach()
 endif()
+message("compared with the uninterrupted run: rtol ${RTOL}, atol ${ATOL}, ignored: ${IGNORE}, "
+        "same files: ${SAME_FILES} (${EXPECTED})")
 if(NOT RESTART_NP)
   set(RESTART_NP ${NP})
 endif()
