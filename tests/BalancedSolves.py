@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """CTest run_hertz2d_balanced: the contact Newton's Krylov solves balanced with η_CF.
 
-    python3 BalancedSolves.py --app stresscontact --deck DECK --out DIR
+    python3 BalancedSolves.py --app stresscontact --deck DECK --out DIR --expected FILE
 
 Runs DECK (Hertz 2D frictionless) on the 0.2 mesh, 4 Dörfler cycles, Linear Solver/Type =
 Iterative (GMRES, exact stress block), with Contact/Newton/Stopping = Balanced and its default
 fraction γ, and compares its summary.json with stored numbers of the same run with
-Stopping = Fixed (Tolerance 1e-8; 1 rank, 2026-12-03) (docs/theory.md "Solves balanced with the
+Stopping = Fixed (Tolerance 1e-8; 1 rank, 2026-12-03; "fixed_run" of the --expected file,
+tests/expected/hertz2d_frictionless_balanced.json) (docs/theory.md "Solves balanced with the
 discretisation error"):
 
 - the same meshes (DOFs of every cycle) and Newton steps per cycle: the rule changes no mesh and
@@ -25,14 +26,6 @@ import shutil
 import subprocess
 import sys
 
-# Stopping = Fixed, the same run otherwise (stored 2026-12-03, 1 rank).
-STORED_FIXED = {
-    "dofs": [1716, 1754, 1820, 1891, 2122],
-    "load": [102.66750419738774, 105.35122267953689, 106.9317202779041, 107.33073653292661,
-             107.26863365815657],
-    "newton": [3, 3, 1, 1, 1],
-    "krylov_total": 412,
-}
 SETS = ["Mesh/Initial mesh size=0.2", "Adaptivity/Cycles=4", "Adaptivity/Marking=Dorfler",
         "Linear Solver/Type=Iterative", "Output/Write XDMF=false",
         "Output/Write contact CSV=false"]
@@ -49,7 +42,16 @@ def main():
     ap.add_argument("--deck", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--stopping", default="Balanced", help="Fixed: print the numbers to store")
+    ap.add_argument("--expected", help="the stored fixed run (tests/expected/<deck>_balanced.json)")
     args = ap.parse_args()
+    if args.stopping != "Fixed":
+        if not args.expected:
+            ap.error("--expected is needed to compare with the stored fixed run")
+        with open(args.expected) as f:
+            expected = json.load(f)
+        if not expected.get("source"):
+            fail("%s: no 'source' for its numbers" % args.expected)
+        stored_fixed = expected["fixed_run"]
     if os.path.isdir(args.out):
         shutil.rmtree(args.out)
     cmd = [args.app, args.deck, "--quiet", "--output", args.out]
@@ -82,9 +84,9 @@ def main():
     # converged = false and a non-zero exit).
     check(summary["converged"] is True, "converged")
 
-    check(dofs == STORED_FIXED["dofs"], "DOFs per cycle %s == stored fixed %s" % (dofs, STORED_FIXED["dofs"]))
-    check(newton == STORED_FIXED["newton"],
-          "Newton steps per cycle %s == stored fixed %s" % (newton, STORED_FIXED["newton"]))
+    check(dofs == stored_fixed["dofs"], "DOFs per cycle %s == stored fixed %s" % (dofs, stored_fixed["dofs"]))
+    check(newton == stored_fixed["newton"],
+          "Newton steps per cycle %s == stored fixed %s" % (newton, stored_fixed["newton"]))
     for i, c in enumerate(cycles):
         bal = c["contact"].get("balanced")
         if i == 0:
@@ -100,13 +102,13 @@ def main():
               "cycle %d: bound %.6g == γ η of cycle %d (%.6g)" % (i, bal["bound"], i - 1, gamma * eta_prev))
         check(bal["algebraic_error"] <= bal["bound"],
               "cycle %d: estimated algebraic error %.3g <= bound %.3g" % (i, bal["algebraic_error"], bal["bound"]))
-        rel = abs(load[i] - STORED_FIXED["load"][i]) / abs(STORED_FIXED["load"][i])
+        rel = abs(load[i] - stored_fixed["load"][i]) / abs(stored_fixed["load"][i])
         check(rel <= tol, "cycle %d: load %.12g against fixed %.12g: relative %.2e <= γ η/|A^1/2 σ_h| = %.2e"
-              % (i, load[i], STORED_FIXED["load"][i], rel, tol))
-    check(krylov < STORED_FIXED["krylov_total"],
-          "Krylov iterations %d < stored fixed %d" % (krylov, STORED_FIXED["krylov_total"]))
-    check(sum(newton) <= sum(STORED_FIXED["newton"]),
-          "Newton steps %d <= stored fixed %d" % (sum(newton), sum(STORED_FIXED["newton"])))
+              % (i, load[i], stored_fixed["load"][i], rel, tol))
+    check(krylov < stored_fixed["krylov_total"],
+          "Krylov iterations %d < stored fixed %d" % (krylov, stored_fixed["krylov_total"]))
+    check(sum(newton) <= sum(stored_fixed["newton"]),
+          "Newton steps %d <= stored fixed %d" % (sum(newton), sum(stored_fixed["newton"])))
     return 0 if ok else 1
 
 
