@@ -20,6 +20,8 @@ SC_DEBIAN_PACKAGES=(
   libmuparser-dev
   # scripts/plot-run.py and its tests plot_run_<deck>, run with /usr/bin/python3
   python3-matplotlib python3-h5py
+  # tests/SpenceHalfPlane.py (test spence_half_plane: elliptic integrals, root finding)
+  python3-scipy
 )
 
 sc_log() { printf '[stresscontact setup] %s\n' "$*"; }

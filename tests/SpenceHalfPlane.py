@@ -24,7 +24,8 @@ no closed form); without, Goodman's approximation as in the closed forms.
 Checks (Goodman, the default): one step within 0.006 of the static closed form (one cell: 0.0058 a);
 the ratio growing with N by shrinking differences; and the last N's ratio, extrapolated in 1/N
 from the last two (c(N) + (c(N) - c(N/2))), within 0.008 of Spence's value. Measured with n = 400
-(2026-12-03): see the output. About 6 s; label long.
+(2026-12-03): see the output. About 4 s, in the default suite (needs Debian's python3-scipy,
+installed by scripts/common.sh; exit 77 without it).
 """
 
 import argparse
