@@ -25,15 +25,13 @@ if [ ${#files[@]} -eq 0 ]; then
 fi
 command -v clang-format >/dev/null || { echo "format.sh: clang-format is not installed" >&2; exit 2; }
 style=--style=file  # the .clang-format at the repository root
-changed=0
-for f in "${files[@]}"; do
-  if [ "$check" -eq 1 ]; then
-    if ! clang-format "$style" "$f" | cmp -s - "$f"; then
-      echo "$f"
-      changed=1
-    fi
-  else
-    clang-format "$style" -i "$f"
+if [ "$check" -eq 1 ]; then
+  # One clang-format process for all files (one per file costs ~40 ms each); its diagnostics
+  # ("FILE:LINE:COL: error: code should be clang-formatted") name the files that would change.
+  if out=$(clang-format "$style" --dry-run -Werror "${files[@]}" 2>&1); then
+    exit 0
   fi
-done
-exit "$changed"
+  printf '%s\n' "$out" | sed -n 's/^\(.*\):[0-9]*:[0-9]*: error: .*/\1/p' | sort -u
+  exit 1
+fi
+clang-format "$style" -i "${files[@]}"
