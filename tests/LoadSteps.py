@@ -438,6 +438,16 @@ def mindlin_deresiewicz(summary, out, mu, E, nu, checks, expected):
         check_stored(checks, stored, key, value)
 
 
+def peer_finest_steps(name):
+    """The rows of docs/peer/NAME (a cattaneo_mindlin2d_primal.py --deck-steps output) of its
+    finest level, Taylor-Hood with the multiplier method, by step: (path, level, {step: row})."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer", name)
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(f) if (r["elem"], r["method"]) == ("th", "mult")]
+    level = max(int(r["level"]) for r in rows)
+    return path, level, {int(r["step"]): r for r in rows if int(r["level"]) == level}
+
+
 def md_peer_comparison(steps, out, checks, tolerances):
     """Steps 2-4 of input/mindlin_deresiewicz2d.xml against the primal GetFEM computation with
     incremental friction of the same steps (docs/peer/README.md "Mindlin-Deresiewicz", values
@@ -449,12 +459,7 @@ def md_peer_comparison(steps, out, checks, tolerances):
     codes put an end midway between two points, so each is within half its spacing of its
     discrete zone's end."""
     PEER_FORCE_TOL = tolerances["force_tolerance"]
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
-                        "mindlin_deresiewicz2d_primal.csv")
-    with open(path) as f:
-        rows = [r for r in csv.DictReader(f) if (r["elem"], r["method"]) == ("th", "mult")]
-    level = max(int(r["level"]) for r in rows)
-    peer = {int(r["step"]): r for r in rows if int(r["level"]) == level}
+    path, level, peer = peer_finest_steps("mindlin_deresiewicz2d_primal.csv")
     checks.check(sorted(peer) == [1, 2, 3, 4], f"{path} has steps 1-4 of level {level}")
     if 2 not in peer:
         return
@@ -489,12 +494,8 @@ def loop_peer_comparison(pts, n, checks, tolerances):
     tolerance of peer_comparison), and the peer's own deviations from Masing's construction
     printed beside this run's."""
     PEER_FORCE_TOL = tolerances["force_tolerance"]
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "docs", "peer",
-                        "mindlin_deresiewicz_loop2d_primal.csv")
-    with open(path) as f:
-        rows = [r for r in csv.DictReader(f) if (r["elem"], r["method"]) == ("th", "mult")]
-    level = max(int(r["level"]) for r in rows)
-    peer = {int(r["step"]): float(r["Q"]) for r in rows if int(r["level"]) == level}
+    path, level, rows = peer_finest_steps("mindlin_deresiewicz_loop2d_primal.csv")
+    peer = {step: float(r["Q"]) for step, r in rows.items()}
     checks.check(sorted(peer) == list(range(1, len(pts) + 1)), f"{path} has steps 1-{len(pts)} of level {level}")
     if len(peer) != len(pts):
         return
