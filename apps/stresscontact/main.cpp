@@ -9,8 +9,10 @@
 //
 // Exit status: 0 success, 1 bad input (deck, mesh file, command line), 2 a solver did not
 // converge (summary.json says converged: false), 3 any other error.
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -56,6 +58,11 @@ struct CommandLine {
   bool check = false, quiet = false, printParameters = false, help = false, version = false;
 };
 
+/// The command line's options (`-h` is a short form of `--help`).
+const std::vector<std::string> kOptions = {"--output", "--set",    "--restart",
+                                           "--check",  "--quiet",  "--print-parameters",
+                                           "--help",   "--version"};
+
 CommandLine parseCommandLine(int argc, char* argv[])
 {
   CommandLine cl;
@@ -66,12 +73,11 @@ CommandLine parseCommandLine(int argc, char* argv[])
       // `--output --check deck.xml` (a value forgotten) would otherwise write into a directory
       // named "--check" and run instead of checking.
       const std::string next = argv[i + 1];
-      for (const char* option : {"--output", "--set", "--restart", "--check", "--quiet",
-                                 "--print-parameters", "--help", "-h", "--version"})
-        SC_THROW_IF(next == option, sc::core::InputError,
-                    flag << " needs a value, but the next argument is the option '" << next
-                         << "' (a value that starts like an option: write it as ./" << next
-                         << " or give the value first). " << kUsage);
+      SC_THROW_IF(next == "-h" || std::count(kOptions.begin(), kOptions.end(), next) > 0,
+                  sc::core::InputError,
+                  flag << " needs a value, but the next argument is the option '" << next
+                       << "' (a value that starts like an option: write it as ./" << next
+                       << " or give the value first). " << kUsage);
       return argv[++i];
     };
     // An empty directory (`--output "$DIR"` with DIR unset) is a scripting error: read as "not
@@ -100,11 +106,13 @@ CommandLine parseCommandLine(int argc, char* argv[])
       cl.overrides.push_back(value(a));
     else if (a == "--restart")
       cl.restart = directory(a, "for a new run");
-    else if (a.rfind("--", 0) == 0)
+    else if (a.rfind("--", 0) == 0) {
+      std::ostringstream valid;
+      for (std::size_t k = 0; k < kOptions.size(); ++k)
+        valid << (k ? ", " : "") << kOptions[k];
       SC_THROW_IF(true, sc::core::InputError,
-                  "unknown option '" << a << "'. Valid options: --output, --set, --restart, "
-                                     << "--check, --quiet, --print-parameters, --help, --version.");
-    else {
+                  "unknown option '" << a << "'. Valid options: " << valid.str() << ".");
+    } else {
       SC_THROW_IF(!cl.input.empty(), sc::core::InputError,
                   "more than one input deck given ('" << cl.input << "' and '" << a << "').");
       cl.input = a;
