@@ -20,6 +20,15 @@
 #     the same per-rank tests for a command that calls mpiexec itself (@NP@ in its arguments).
 
 set(SC_MPIEXEC_EXTRA_FLAGS "--oversubscribe")
+# The tests run on one machine: under Open MPI they use its shared-memory transport (ob1 with the
+# self and vader BTLs) instead of initialising UCX, the network layer, in every rank, which costs
+# about 0.2 s per launch here, and some 380 launches make the default suite (docs/performance.md
+# "Start-up"). Other MPI implementations get no extra flags.
+execute_process(COMMAND ${MPIEXEC_EXECUTABLE} --version OUTPUT_VARIABLE _sc_mpiexec_version
+                ERROR_QUIET)
+if(_sc_mpiexec_version MATCHES "Open MPI|OpenRTE")
+  list(APPEND SC_MPIEXEC_EXTRA_FLAGS --mca pml ob1 --mca btl self,vader)
+endif()
 # Every test runs with floating-point exceptions trapped (FE_INVALID, FE_DIVBYZERO, FE_OVERFLOW;
 # sc/core/FloatingPointTraps.hpp) unless configured with -DSC_TRAP_FPE=0.
 set(SC_TRAP_FPE 1 CACHE STRING "Value of SC_TRAP_FPE in the tests' environment (1: trap)")

@@ -153,6 +153,32 @@ int launcherRank()
   return 0;
 }
 
+// Whether an MPI launcher (mpiexec/mpirun, Hydra, Slurm's srun) started this process.
+bool startedByLauncher()
+{
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_PROCID"})
+    if (std::getenv(name) != nullptr) return true;
+  return false;
+}
+
+// A process started without a launcher is an MPI singleton: one rank, no peers. Open MPI 4.1's
+// defaults make its MPI_Init take 0.35 s on this project's machine, about half of a small run:
+// it forks an `orted` daemon (which only MPI_Comm_spawn would need) and initialises UCX, the
+// network transport, for a job that never sends a message to another process. The environment
+// below (read by MPI_Init) starts the singleton without the daemon and with the shared-memory/self
+// transports, which takes 0.03 s (docs/performance.md "Start-up"). Nothing changes under a
+// launcher, and a value the user set (environment or an Open MPI parameter file read as the
+// same variable) is left alone.
+void startSingletonWithoutDaemonOrNetwork()
+{
+#ifdef OPEN_MPI
+  if (startedByLauncher()) return;
+  ::setenv("OMPI_MCA_ess_singleton_isolated", "1", /*overwrite=*/0);
+  ::setenv("OMPI_MCA_pml", "ob1", 0);
+  ::setenv("OMPI_MCA_btl", "self,vader", 0);
+#endif
+}
+
 int main(int argc, char* argv[])
 {
   // --help, --version and --print-parameters need neither MPI nor Kokkos: they answer before
@@ -173,6 +199,7 @@ int main(int argc, char* argv[])
   // Before MPI_Init: keeps Open MPI from an MPI-IO component that overflows a buffer on paths
   // over 244 characters (sc/io/MpiIoEnvironment.hpp).
   sc::io::leaveOutOverflowingMpiIoComponents();
+  startSingletonWithoutDaemonOrNetwork();
   Teuchos::GlobalMPISession mpiSession(&argc, &argv, nullptr);
   auto comm = Teuchos::DefaultComm<int>::getComm();
   const int rank = comm->getRank();
