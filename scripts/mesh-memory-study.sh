@@ -8,7 +8,8 @@
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 B="$SC_BUILD_DIR/packages/assembly/mesh_memory_benchmark"
 [ -x "$B" ] || { echo "mesh-memory-study: $B not built (cmake --build $SC_BUILD_DIR --target mesh_memory_benchmark)" >&2; exit 1; }
-run() { uptime; free -m | sed -n 2p; nice -n 10 "$@"; }
+renice -n 10 $$ > /dev/null  # this script and every run it starts
+run() { uptime; free -m | sed -n 2p; "$@"; }
 for n in 1 2; do
   # 2D: 1.08·10⁶ and 4.33·10⁶ triangles with the numbering, 1.10·10⁷ without it (the numbering of
   # 1.1·10⁷ triangles needs about 8.5 GB per rank: projected from the two smaller sizes).
