@@ -43,11 +43,15 @@ CycleForces computeCycleForces(const assembly::MixedElasticityAssembler& assembl
     const auto type = bc ? bc->type : core::BoundaryType::Free;
     if (type == core::BoundaryType::Contact)
       continue;  // the contact force is the summary's (Σ_p ∫_F w_p τ_p, the same integral)
-    const bool support = type == core::BoundaryType::Displacement ||
-                         type == core::BoundaryType::Symmetry ||
-                         type == core::BoundaryType::NormalDisplacement;
+    // A Components part is a support in its displacement components and a load in the others.
+    const bool support =
+        type == core::BoundaryType::Displacement || type == core::BoundaryType::Symmetry ||
+        type == core::BoundaryType::NormalDisplacement || (bc && bc->hasDisplacementComponent());
     for (int i = 0; i < 3; ++i)
-      (support ? supports : loads)[i] += p.force[i];
+      (support &&
+               (type != core::BoundaryType::Components || (i < d && bc->displacementComponent(i)))
+           ? supports
+           : loads)[i] += p.force[i];
     largestPart = std::max(largestPart, norm(p.force));
     if (!support) continue;
     nlohmann::ordered_json r = {{"type", core::toString(type)},

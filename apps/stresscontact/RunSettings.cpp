@@ -1,5 +1,6 @@
 #include "RunSettings.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 #include <tuple>
@@ -100,11 +101,13 @@ RunSettings readRunSettings(Teuchos::ParameterList& params, int rank, int ranks)
   // Displacements enter the mixed formulation only through Displacement boundaries: without one,
   // rigid-body motions are free and the system is singular (a pure traction or contact problem
   // is ill-posed here). Say so now rather than let the solver fail (docs/reliability.md).
-  // Symmetry and Normal displacement parts can fix them too (checked with the mesh,
-  // assembly::checkLoadsAndSupports).
+  // Symmetry, Normal displacement and Components parts with a displacement component can fix
+  // them too (checked with the mesh, assembly::checkLoadsAndSupports).
   if (s.conditions.boundariesOfType(core::BoundaryType::Displacement).empty() &&
       s.conditions.boundariesOfType(core::BoundaryType::Symmetry).empty() &&
-      s.conditions.boundariesOfType(core::BoundaryType::NormalDisplacement).empty()) {
+      s.conditions.boundariesOfType(core::BoundaryType::NormalDisplacement).empty() &&
+      std::none_of(s.conditions.conditions.begin(), s.conditions.conditions.end(),
+                   [](const auto& c) { return c.hasDisplacementComponent(); })) {
     std::ostringstream given;
     for (const auto& bc : s.conditions.conditions)
       given << (given.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' ("
@@ -115,8 +118,8 @@ RunSettings readRunSettings(Teuchos::ParameterList& params, int rank, int ranks)
                     << "): rigid-body motions are not fixed and the problem is ill-posed in the "
                     << "stress-based formulation (contact and tractions do not fix them). Give at "
                     << "least one boundary part <ParameterList name=\"...\"> with Type = "
-                    << "'Displacement' and a Value, or Type 'Symmetry' on parts that hold every "
-                    << "rigid motion.");
+                    << "'Displacement' and a Value, or Type 'Symmetry' (or 'Components' with "
+                    << "displacement components) on parts that hold every rigid motion.");
   }
   return s;
 }

@@ -6,6 +6,7 @@
 #include <Teuchos_UnitTestHarness.hpp>
 
 #include "sc/core/Error.hpp"
+#include "sc/core/ExactSolution.hpp"
 #include "sc/core/Parameters.hpp"
 #include "sc/core/ProblemData.hpp"
 
@@ -176,7 +177,7 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataKeys)
     TEST_ASSERT(
         inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(validated(bc), 2); })
             .find("'Boundary Conditions/Top/Data' = 'Exact solution' is for Type "
-                  "Displacement or Traction") != std::string::npos);
+                  "Displacement, Traction or Components") != std::string::npos);
   }
   // A formula that does not compile fails at validation, naming the key and the entry.
   {
@@ -190,6 +191,71 @@ TEUCHOS_UNIT_TEST(ProblemData, BoundaryDataKeys)
     TEST_ASSERT(msg.find("deck.xml: 'Boundary Conditions/Top/Expression' entry 2 = '2*(y+' is "
                          "not a valid formula: Unexpected end of expression at position 6") !=
                 std::string::npos);
+  }
+}
+
+// Type Components (docs/theory.md §"Loads and supports"): component i of the data is Value[i],
+// or u_i or (σn)_i of the exact solution as the entry of 'Components' says (analytic: the exact
+// solution's own values); blanks around the entries are ignored; the key is refused with
+// another Type and needs d entries.
+TEUCHOS_UNIT_TEST(ProblemData, ComponentsData)
+{
+  using sc::core::ComponentCondition;
+  const Teuchos::Array<std::string> dt(Teuchos::tuple<std::string>("Displacement", " Traction"));
+  ParameterList bc;
+  bc.sublist("Left").set("Type", std::string("Components"));
+  bc.sublist("Left").set("Components", dt);
+  bc.sublist("Left").set("Data", std::string("Exact solution"));
+  bc.sublist("Top").set("Type", std::string("Components"));
+  bc.sublist("Top").set("Components", Teuchos::Array<std::string>(
+                                          Teuchos::tuple<std::string>("Traction", "Displacement")));
+  bc.sublist("Top").set("Value", Teuchos::Array<double>(Teuchos::tuple<double>(2.0, -0.5)));
+  const auto bcs = sc::core::BoundaryConditions::fromParameters(validated(bc), 2);
+  const auto* left = bcs.find("Left");
+  TEST_ASSERT(left->components == std::vector<ComponentCondition>({ComponentCondition::Displacement,
+                                                                   ComponentCondition::Traction}));
+  TEST_ASSERT(left->hasDisplacementComponent() && left->displacementComponent(0) &&
+              !left->displacementComponent(1));
+  const auto exact =
+      sc::core::createExactSolution("Manufactured smooth", 2, sc::core::Material{1.0, 0.3}, M_PI);
+  const double x[2] = {0.0, 0.3}, n[2] = {-1.0, 0.0};
+  double data[3], u[2], t[2];
+  left->evaluate(x, n, 2, exact.get(), data);
+  exact->displacement(x, u);
+  exact->traction(x, n, t);
+  TEST_EQUALITY(data[0], u[0]);
+  TEST_EQUALITY(data[1], t[1]);
+  TEST_ASSERT(u[0] != t[0] && u[1] != t[1]);  // the components are told apart
+  bcs.find("Top")->evaluate(x, n, 2, nullptr, data);
+  TEST_EQUALITY(data[0], 2.0);
+  TEST_EQUALITY(data[1], -0.5);
+  {
+    ParameterList wrong;
+    wrong.sublist("Left").set("Type", std::string("Symmetry"));
+    wrong.sublist("Left").set("Components", dt);
+    TEST_ASSERT(inputErrorOf([&] {
+                  sc::core::BoundaryConditions::fromParameters(validated(wrong), 2);
+                }).find("'Boundary Conditions/Left/Components' is given, but Type is 'Symmetry'") !=
+                std::string::npos);
+  }
+  {
+    ParameterList three;
+    three.sublist("Left").set("Type", std::string("Components"));
+    three.sublist("Left").set("Components", dt);
+    three.sublist("Left").set("Value", Teuchos::Array<double>(2, 0.0));
+    TEST_ASSERT(
+        inputErrorOf([&] { sc::core::BoundaryConditions::fromParameters(validated(three), 3); })
+            .find("needs 'Boundary Conditions/Left/Components' with one entry per space "
+                  "dimension (Problem/Dimension is 3)") != std::string::npos);
+  }
+  {
+    ParameterList typo;
+    typo.sublist("Left").set("Type", std::string("Components"));
+    typo.sublist("Left").set("Components", Teuchos::Array<std::string>(
+                                               Teuchos::tuple<std::string>("Displacement", "u")));
+    TEST_ASSERT(inputErrorOf([&] { validated(typo); })
+                    .find("'Left/Components' entry 2 = 'u' is not valid. Valid values: "
+                          "'Displacement', 'Traction'") != std::string::npos);
   }
 }
 

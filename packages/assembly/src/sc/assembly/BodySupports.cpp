@@ -16,9 +16,10 @@ void checkEveryBodyIsHeld(const mesh::SimplexMesh& m, const core::BoundaryCondit
   if (bodies.size() < 2) return;
   const int d = m.dim();
   const auto frames = normalFrameParts(m, bcs);
+  const auto supports = supportDirections(m, bcs, frames);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     bool held = false;
-    std::map<std::string, NormalFramePart> bodyFrames;  // the body's Symmetry parts
+    std::vector<SupportDirection> bodySupports;  // of the body's Symmetry, Components ... parts
     std::ostringstream parts;
     for (int id : bodies[b].boundaryIds) {
       const std::string& name = m.boundaryName(id);
@@ -26,15 +27,14 @@ void checkEveryBodyIsHeld(const mesh::SimplexMesh& m, const core::BoundaryCondit
       const core::BoundaryType type = bc ? bc->type : core::BoundaryType::Free;
       held = held || type == core::BoundaryType::Displacement;
       parts << "'" << name << "' (" << core::toString(type);
-      if (bc && bc->inNormalFrame()) {
-        bodyFrames[name] = frames.at(name);
-        parts << ", " << describePlane(frames.at(name), d);
-      }
+      for (const auto& s : supports)
+        if (s.part == name) bodySupports.push_back(s);
+      if (bc && bc->inNormalFrame()) parts << ", " << describePlane(frames.at(name), d);
       parts << (bc ? "" : ", not in 'Boundary Conditions'") << ")";
       parts << (id == bodies[b].boundaryIds.back() ? "" : ", ");
     }
-    held = held ||
-           (!bodyFrames.empty() && freeRigidMotions(m, bodyFrames, &bodies[b].elements).empty());
+    held = held || (!bodySupports.empty() &&
+                    freeRigidMotions(m, bodySupports, &bodies[b].elements).empty());
     SC_THROW_IF(!held, core::InputError,
                 "the mesh of "
                     << m.origin() << " holds " << bodies.size()

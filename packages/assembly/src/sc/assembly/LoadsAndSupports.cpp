@@ -159,9 +159,28 @@ void checkNormalFramePartsFlat(const mesh::SimplexMesh& m, const core::BoundaryC
     }
 }
 
-std::vector<std::vector<double>>
-freeRigidMotions(const mesh::SimplexMesh& m, const std::map<std::string, NormalFramePart>& parts,
-                 const std::vector<int>* elements)
+std::vector<SupportDirection>
+supportDirections(const mesh::SimplexMesh& m, const core::BoundaryConditions& bcs,
+                  const std::map<std::string, NormalFramePart>& frameParts)
+{
+  std::vector<SupportDirection> out;
+  for (const auto& bc : bcs.conditions) {
+    if (!m.hasBoundary(bc.boundary)) continue;
+    if (bc.inNormalFrame()) out.push_back({bc.boundary, frameParts.at(bc.boundary).normal});
+    if (bc.type == core::BoundaryType::Components)
+      for (int i = 0; i < m.dim(); ++i)
+        if (bc.displacementComponent(i)) {
+          SupportDirection s{bc.boundary, {0, 0, 0}};
+          s.direction[i] = 1.0;
+          out.push_back(s);
+        }
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> freeRigidMotions(const mesh::SimplexMesh& m,
+                                                  const std::vector<SupportDirection>& supports,
+                                                  const std::vector<int>* elements)
 {
   const int d = m.dim(), r = d == 2 ? 3 : 6;
   double centre[3] = {0, 0, 0};
@@ -169,8 +188,8 @@ freeRigidMotions(const mesh::SimplexMesh& m, const std::map<std::string, NormalF
   // Gram matrix of the constraints v(x)·n = 0 at the parts' vertices, in coordinates centred on
   // the bounding box and scaled by its diagonal (translations and rotations of one size).
   std::vector<double> G(static_cast<std::size_t>(r) * r, 0.0);
-  for (const auto& [name, part] : parts)
-    for (int f : m.boundaryFacesOf(name)) {
+  for (const auto& support : supports)
+    for (int f : m.boundaryFacesOf(support.part)) {
       if (elements && !std::binary_search(elements->begin(), elements->end(), m.faceElements(f)[0]))
         continue;
       for (int k = 0; k < d; ++k) {
@@ -178,7 +197,7 @@ freeRigidMotions(const mesh::SimplexMesh& m, const std::map<std::string, NormalF
         double x[3] = {0, 0, 0};
         for (int c = 0; c < d; ++c)
           x[c] = (p[c] - centre[c]) / scale;
-        const double* n = part.normal.data();
+        const double* n = support.direction.data();
         std::vector<double> row(r, 0.0);
         for (int c = 0; c < d; ++c)
           row[c] = n[c];
@@ -243,16 +262,30 @@ int checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data
   const int d = m.dim();
   const auto& bcs = data.boundaryConditions;
   const auto parts = normalFrameParts(m, bcs);
+  const auto supports = supportDirections(m, bcs, parts);
   int heldByContact = -1;
-  if (bcs.boundariesOfType(core::BoundaryType::Displacement).empty() && !parts.empty()) {
-    bool onlySymmetry = true;
+  if (bcs.boundariesOfType(core::BoundaryType::Displacement).empty() && !supports.empty()) {
+    bool onlySymmetry = true, components = false;
     std::ostringstream names;
     for (const auto& [name, part] : parts) {
       names << (names.tellp() > 0 ? ", " : "") << "'" << name << "' (" << describePlane(part, d)
             << ")";
       onlySymmetry = onlySymmetry && bcs.find(name)->type == core::BoundaryType::Symmetry;
     }
-    const auto free = freeRigidMotions(m, parts);
+    for (const auto& bc : bcs.conditions) {
+      if (!bc.hasDisplacementComponent() || !m.hasBoundary(bc.boundary)) continue;
+      components = true;
+      names << (names.tellp() > 0 ? ", " : "") << "'" << bc.boundary << "' (";
+      for (int i = 0, n = 0; i < d; ++i)
+        if (bc.displacementComponent(i)) names << (n++ ? ", " : "") << "u_" << axisName(i);
+      names << " given)";
+    }
+    std::string kinds = onlySymmetry ? "Symmetry" : "Symmetry and Normal displacement";
+    if (components)
+      kinds = parts.empty()  ? "Components"
+              : onlySymmetry ? "Symmetry and Components"
+                             : "Symmetry, Normal displacement and Components";
+    const auto free = freeRigidMotions(m, supports);
     std::ostringstream missing;
     for (const auto& v : free)
       missing << (missing.tellp() > 0 ? ", " : "") << describeRigidMotion(v, d);
@@ -268,10 +301,11 @@ int checkLoadsAndSupports(const mesh::SimplexMesh& m, const ElasticityData& data
       heldByContact = planeAxis;
     SC_THROW_IF(!free.empty() && heldByContact < 0, core::InputError,
                 "the deck has no Displacement part and its "
-                    << (onlySymmetry ? "Symmetry" : "Symmetry and Normal displacement") << " parts "
-                    << names.str() << " leave rigid-body motions free (nothing holds the body "
-                    << missing.str() << "): the problem is ill-posed. Add a Symmetry part "
-                    << "that holds each missing motion or a Displacement part."
+                    << kinds << " parts " << names.str()
+                    << " leave rigid-body motions free (nothing holds the body " << missing.str()
+                    << "): the problem is ill-posed. Add a Symmetry part (or a Components part "
+                    << "with a displacement component) that holds each missing motion or a "
+                    << "Displacement part."
                     << (plane && bcs.hasContact()
                             ? " (The contact with the plane 'Contact/Obstacle normal' holds the "
                               "body along that normal only when it is a coordinate axis and the "

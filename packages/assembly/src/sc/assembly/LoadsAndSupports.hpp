@@ -45,13 +45,28 @@ void checkNormalFramePartsFlat(const mesh::SimplexMesh& mesh,
                                const core::BoundaryConditions& boundaryConditions,
                                const mesh::CurvedElements& curved);
 
-/// The rigid motions v(x) = c + ω × x (2D: c + ω (−y, x)) with v·n = 0 on all of the given
-/// normal-frame parts (on their faces that belong to `elements`, ascending, when given): a basis
-/// of the null space, each vector (c, ω) with d + 1 (2D) or 6 (3D) entries, translations first.
-/// Empty when the parts hold the body.
-std::vector<std::vector<double>>
-freeRigidMotions(const mesh::SimplexMesh& mesh, const std::map<std::string, NormalFramePart>& parts,
-                 const std::vector<int>* elements = nullptr);
+/// A direction along which a part prescribes the displacement, u·direction = data (docs/theory.md
+/// §"Loads and supports"): the normal of a Symmetry or Normal displacement part, e_i for each
+/// displacement component i of a Components part.
+struct SupportDirection {
+  std::string part;
+  std::array<double, 3> direction{};
+};
+
+/// The support directions of every Symmetry, Normal displacement and Components part the mesh
+/// has (`frameParts` from normalFrameParts); not those of Displacement parts, which hold
+/// every motion.
+std::vector<SupportDirection>
+supportDirections(const mesh::SimplexMesh& mesh, const core::BoundaryConditions& boundaryConditions,
+                  const std::map<std::string, NormalFramePart>& frameParts);
+
+/// The rigid motions v(x) = c + ω × x (2D: c + ω (−y, x)) with v·direction = 0 at the vertices
+/// of all of the given parts (on their faces that belong to `elements`, ascending, when given):
+/// a basis of the null space, each vector (c, ω) with d + 1 (2D) or 6 (3D) entries, translations
+/// first. Empty when the parts hold the body.
+std::vector<std::vector<double>> freeRigidMotions(const mesh::SimplexMesh& mesh,
+                                                  const std::vector<SupportDirection>& supports,
+                                                  const std::vector<int>* elements = nullptr);
 
 /// "along y", "along (0.5, 0.866)" or "against a rotation" for a free rigid motion.
 std::string describeRigidMotion(const std::vector<double>& motion, int dim);
@@ -65,13 +80,13 @@ struct ContactPlane {
   std::array<double, 3> normal{};
 };
 
-/// normalFrameParts, and: without a Displacement part the Symmetry and Normal displacement
-/// parts must hold every rigid motion (freeRigidMotions; otherwise the matrix is singular), or
-/// all but the translation along the normal of a contact `plane` ν = ±e_a: then the contact
-/// alone holds the body along e_a, as a roller does when in contact (docs/theory.md §"Loads
-/// and supports"), and the function returns a. Every formula (boundary data on its part's
-/// vertices, body force on all vertices) must be finite. Throws InputError naming the keys.
-/// Returns −1 when the body is held without the contact.
+/// normalFrameParts, and: without a Displacement part the Symmetry, Normal displacement and
+/// Components parts (supportDirections) must hold every rigid motion (freeRigidMotions; otherwise
+/// the matrix is singular), or all but the translation along the normal of a contact `plane` ν =
+/// ±e_a: then the contact alone holds the body along e_a, as a roller does when in contact
+/// (docs/theory.md §"Loads and supports"), and the function returns a. Every formula (boundary data
+/// on its part's vertices, body force on all vertices) must be finite. Throws InputError naming the
+/// keys. Returns −1 when the body is held without the contact.
 int checkLoadsAndSupports(const mesh::SimplexMesh& mesh, const ElasticityData& data,
                           const ContactPlane* plane = nullptr);
 

@@ -312,7 +312,8 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
                 ((i == j ? G[a * nRT + bb] : 0.0) - cd * P[((i * d + j) * nRT + a) * nRT + bb]);
 
     // Boundary faces: natural u_D, essential t (projected; −p n for a pressure), free (t = 0),
-    // and Symmetry / Normal displacement (the tangential components zero).
+    // Symmetry / Normal displacement (the tangential components zero) and Components (each
+    // row natural or essential).
     const int* faces = m.elementFaces(e);
     for (int lf = 0; lf <= d; ++lf) {
       const int f = faces[lf];
@@ -389,7 +390,13 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       // Traction, pressure or free: σ_i·n = t_i on the face, as the L² projection onto the
       // normal traces of the face DOFs (only these have a non-zero normal trace on the face).
       // A pressure's t = −p n follows the face's normal at each quadrature point, which varies
-      // on a curved face.
+      // on a curved face. Components (global frame, any face): row i is essential like this
+      // when component i is a traction, and natural like a Displacement part's when it is a
+      // displacement (the load ⟨g_i, τ_i·n⟩); no frame is needed (docs/theory.md §"Loads and
+      // supports").
+      bool essentialRow[3] = {true, true, true};
+      for (int i = 0; i < d; ++i)
+        essentialRow[i] = !(bc && bc->displacementComponent(i));
       std::vector<double> values(static_cast<std::size_t>(d) * nF, 0.0);
       const bool zero = type == core::BoundaryType::Free || bc->isZero();
       if (!zero) {
@@ -404,10 +411,14 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
             for (int j = 0; j < nF; ++j)
               M[l * nF + j] += fv.weight(q) * pl * fv.stressNormal(faceDofs[j], q);
             for (int i = 0; i < d; ++i)
-              rhs[i][l] += fv.weight(q) * t[i] * pl;
+              if (essentialRow[i])
+                rhs[i][l] += fv.weight(q) * t[i] * pl;
+              else
+                F[S.stressOffset(i) + faceDofs[l]] += fv.weight(q) * t[i] * pl;
           }
         }
         for (int i = 0; i < d; ++i) {
+          if (!essentialRow[i]) continue;
           solveDense(M, rhs[i], nF);
           for (int l = 0; l < nF; ++l)
             values[i * nF + l] = rhs[i][l];
@@ -415,6 +426,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       }
       for (int i = 0; i < d; ++i)
         for (int l = 0; l < nF; ++l) {
+          if (!essentialRow[i]) continue;
           const int c = S.stressOffset(i) + faceDofs[l];
           constrained[c] = 1;
           constrainedValue[c] = values[i * nF + l];

@@ -318,6 +318,49 @@ void RealArrayValidator::validate(const Teuchos::ParameterEntry& entry,
                     << " contains a non-finite number.");
 }
 
+ChoiceArrayValidator::ChoiceArrayValidator(std::vector<std::string> choices,
+                                           std::vector<int> allowedSizes)
+    : choices_(std::move(choices)), sizes_(std::move(allowedSizes))
+{
+}
+
+void ChoiceArrayValidator::printDoc(const std::string& doc, std::ostream& out) const
+{
+  out << "# " << doc << "\n# Array(string) of " << quotedList(choices_) << ", of length";
+  for (std::size_t i = 0; i < sizes_.size(); ++i)
+    out << (i ? " or " : " ") << sizes_[i];
+  out << "\n";
+}
+
+void ChoiceArrayValidator::validate(const Teuchos::ParameterEntry& entry,
+                                    const std::string& paramName,
+                                    const std::string& sublistName) const
+{
+  const std::string key = sublistName + "/" + paramName;
+  const auto* v = anyPtr<Teuchos::Array<std::string>>(entry);
+  SC_THROW_IF(!v, InputError,
+              "'" << key << "' must be an Array(string) such as \"{" << choices_.front() << ", "
+                  << choices_.back() << "}\", got " << valueOf(entry));
+  const int n = static_cast<int>(v->size());
+  if (!sizes_.empty() && std::find(sizes_.begin(), sizes_.end(), n) == sizes_.end()) {
+    std::ostringstream os;
+    for (std::size_t i = 0; i < sizes_.size(); ++i)
+      os << (i ? " or " : "") << sizes_[i];
+    SC_THROW_IF(true, InputError,
+                "'" << key << "' = " << valueOf(entry) << " has " << n << " entries; it must have "
+                    << os.str() << ".");
+  }
+  const auto entries = trimmedEntries(*v);
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (std::find(choices_.begin(), choices_.end(), entries[i]) == choices_.end()) {
+      const std::string suggestion = closestMatch(entries[i], choices_);
+      SC_THROW_IF(true, InputError,
+                  "'" << key << "' entry " << i + 1 << " = '" << entries[i] << "' is not valid"
+                      << (suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)")
+                      << ". Valid values: " << quotedList(choices_) << ".");
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 void declareReal(Teuchos::ParameterList& list, const std::string& name, double defaultValue,
                  const std::string& doc, double lower, bool lowerOpen, double upper, bool upperOpen)
@@ -356,6 +399,14 @@ void declareRealArray(Teuchos::ParameterList& list, const std::string& name,
                       std::vector<int> allowedSizes)
 {
   list.set(name, defaultValue, doc, Teuchos::rcp(new RealArrayValidator(std::move(allowedSizes))));
+}
+
+void declareChoiceArray(Teuchos::ParameterList& list, const std::string& name,
+                        const std::vector<std::string>& choices, const std::string& doc,
+                        std::vector<int> allowedSizes)
+{
+  list.set(name, Teuchos::Array<std::string>(), doc,
+           Teuchos::rcp(new ChoiceArrayValidator(choices, std::move(allowedSizes))));
 }
 
 void validateParameters(Teuchos::ParameterList& user, const Teuchos::ParameterList& valid,
@@ -553,6 +604,14 @@ void checkXmlList(const Teuchos::XMLObject& list, const std::string& path, const
 }
 
 }  // namespace
+
+std::vector<std::string> trimmedEntries(const Teuchos::Array<std::string>& entries)
+{
+  std::vector<std::string> out;
+  for (const auto& e : entries)
+    out.push_back(trimmed(e));
+  return out;
+}
 
 std::string checkValueText(const std::string& type, const std::string& text)
 {

@@ -80,6 +80,22 @@ private:
   std::vector<int> sizes_;
 };
 
+/// Array(string) whose entries are each one of a fixed set of strings (surrounding blanks
+/// ignored), with a fixed set of allowed lengths (e.g. one entry per space dimension).
+class ChoiceArrayValidator : public Teuchos::ParameterEntryValidator {
+public:
+  ChoiceArrayValidator(std::vector<std::string> choices, std::vector<int> allowedSizes);
+  const std::string getXMLTypeName() const override { return "sc::ChoiceArrayValidator"; }
+  void printDoc(const std::string& docString, std::ostream& out) const override;
+  ValidStringsList validStringValues() const override { return Teuchos::null; }
+  void validate(const Teuchos::ParameterEntry& entry, const std::string& paramName,
+                const std::string& sublistName) const override;
+
+private:
+  std::vector<std::string> choices_;
+  std::vector<int> sizes_;
+};
+
 inline constexpr double kInfinity = 1e308;
 /// Name of the template sublist of a sublist with user-chosen keys.
 inline const std::string kTemplateSublist = "<...>";
@@ -100,6 +116,12 @@ void declareString(Teuchos::ParameterList& list, const std::string& name,
 void declareRealArray(Teuchos::ParameterList& list, const std::string& name,
                       const Teuchos::Array<double>& defaultValue, const std::string& doc,
                       std::vector<int> allowedSizes);
+/// Declare an Array(string) of choices (default: empty, i.e. not given).
+void declareChoiceArray(Teuchos::ParameterList& list, const std::string& name,
+                        const std::vector<std::string>& choices, const std::string& doc,
+                        std::vector<int> allowedSizes);
+/// The entries of an Array(string) without surrounding blanks ("{a, b}" is read as "a", " b").
+std::vector<std::string> trimmedEntries(const Teuchos::Array<std::string>& entries);
 
 /// Check `user` against `valid` (recursively), then fill in defaults. Throws InputError naming
 /// `origin` (e.g. the deck's file name), the key path, the value and what would be valid. int

@@ -105,6 +105,7 @@ std::string toString(BoundaryType type)
   case BoundaryType::Pressure: return "Pressure";
   case BoundaryType::Symmetry: return "Symmetry";
   case BoundaryType::NormalDisplacement: return "Normal displacement";
+  case BoundaryType::Components: return "Components";
   case BoundaryType::Contact: return "Contact";
   case BoundaryType::Free: return "Free";
   }
@@ -121,7 +122,7 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
                     "'Arc'). Parts not listed are traction-free.");
     declareChoice(t, "Type", "Free",
                   {"Displacement", "Traction", "Pressure", "Symmetry", "Normal displacement",
-                   "Contact", "Free"},
+                   "Components", "Contact", "Free"},
                   "Displacement: u = u_D (natural in the stress formulation); Traction: σn = t "
                   "(essential); Pressure: σn = −p n, n the outward normal of the face (essential; "
                   "n varies along curved faces); Symmetry: u·n = 0 and zero tangential traction "
@@ -129,14 +130,18 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
                   "(Value {g} or Expression {g}; g > 0 moves the part outwards) and zero "
                   "tangential traction. Symmetry and Normal displacement need a flat part (a "
                   "line in 2D, a plane in 3D) of any orientation, n its outward normal; a curved "
-                  "part is an input error. "
+                  "part is an input error. Components: per global component i (x, y, z) either "
+                  "u_i = g_i or (σn)_i = s_i, as 'Components' says, on a part of any shape "
+                  "(curved too). "
                   "Contact: unilateral contact with the Contact/Obstacle; Free: σn = 0 "
                   "(docs/theory.md §\"Loads and supports\").");
     declareRealArray(t, "Value", Teuchos::Array<double>(),
                      "Constant data: u_D or t (one number per space dimension), p or g (one "
-                     "number). Displacement, Traction, Pressure and Normal displacement take "
-                     "exactly one of Value, Expression and Data = 'Exact solution' (the last for "
-                     "Displacement and Traction only).",
+                     "number), g_i or s_i (Components: one number per space dimension, component "
+                     "i's displacement or traction). Displacement, Traction, Pressure, Normal "
+                     "displacement and Components take exactly one of Value, Expression and "
+                     "Data = 'Exact solution' (the last for Displacement, Traction and "
+                     "Components only).",
                      {0, 1, 2, 3});
     declareExpressionArray(t, "Expression",
                            "The data as formulas of x, y, z (one per component, like Value), "
@@ -144,6 +149,13 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
                            "y)}; no commas inside a formula (docs/user-guide.md \"Loads and "
                            "supports\").",
                            {0, 1, 2, 3});
+    declareChoiceArray(t, "Components", {"Displacement", "Traction"},
+                       "Type Components only: the condition of each global component, one entry "
+                       "per space dimension in the order x, y(, z): Displacement (u_i = Value[i], "
+                       "natural) or Traction ((σn)_i = Value[i], essential), e.g. {Displacement, "
+                       "Traction}: u_x given, the traction's y component given (a roller on a "
+                       "line x = const with {0, 0}); docs/theory.md §\"Loads and supports\".",
+                       {0, 2, 3});
     declareRealArray(t, "Values per step", Teuchos::Array<double>(),
                      "Load steps (docs/theory.md §\"Load steps\"): the constant data of every "
                      "step, row after row (Value's components for step 1, then step 2, ...; as "
@@ -154,7 +166,8 @@ Teuchos::RCP<const Teuchos::ParameterList> BoundaryConditions::getValidParameter
     declareChoice(t, "Data", "Value", {"Value", "Exact solution"},
                   "Where u_D or t comes from: 'Value' (the keys Value or Expression), or the "
                   "exact solution named by 'Problem/Exact solution' (manufactured scenes; "
-                  "Displacement and Traction only).");
+                  "Displacement, Traction and Components: u_i or (σn)_i of the exact "
+                  "solution).");
     return pl;
   }();
   return valid;
@@ -175,6 +188,7 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
               : type == "Pressure"            ? BoundaryType::Pressure
               : type == "Symmetry"            ? BoundaryType::Symmetry
               : type == "Normal displacement" ? BoundaryType::NormalDisplacement
+              : type == "Components"          ? BoundaryType::Components
               : type == "Contact"             ? BoundaryType::Contact
                                               : BoundaryType::Free;
     bc.value = toVector(sub.get<Teuchos::Array<double>>("Value"));
@@ -191,8 +205,26 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                     << "constants per load step).");
     const bool hasValue = !bc.value.empty() || !bc.valuesPerStep.empty(),
                hasExpression = !bc.expression.empty();
+    const auto components = trimmedEntries(sub.get<Teuchos::Array<std::string>>("Components"));
+    SC_THROW_IF(bc.type != BoundaryType::Components && !components.empty(), InputError,
+                "'" << key << "/Components' is given, but Type is '" << type
+                    << "': the key is for Type Components only; remove it or set '" << key
+                    << "/Type' = 'Components'.");
+    if (bc.type == BoundaryType::Components) {
+      SC_THROW_IF(components.size() != static_cast<std::size_t>(dimension), InputError,
+                  "'" << key << "' (Type Components) needs '" << key << "/Components' with one "
+                      << "entry per space dimension (Problem/Dimension is " << dimension
+                      << "), each 'Displacement' or 'Traction', e.g. "
+                      << (dimension == 2 ? "{Displacement, Traction}"
+                                         : "{Displacement, Traction, Traction}")
+                      << "; it has " << components.size() << ".");
+      for (const auto& c : components)
+        bc.components.push_back(c == "Displacement" ? ComponentCondition::Displacement
+                                                    : ComponentCondition::Traction);
+    }
     if (bc.type == BoundaryType::Displacement || bc.type == BoundaryType::Traction ||
-        bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement) {
+        bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement ||
+        bc.type == BoundaryType::Components) {
       // Pressure and Normal displacement take one scalar (p, g).
       const bool pressure =
           bc.type == BoundaryType::Pressure || bc.type == BoundaryType::NormalDisplacement;
@@ -202,7 +234,8 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
                   "'" << key << "/Value' and '" << key << "/Expression' are both given; give one "
                       << "of them (Value: constants, Expression: formulas of x, y, z).");
       SC_THROW_IF(bc.fromExactSolution && pressure, InputError,
-                  "'" << key << "/Data' = 'Exact solution' is for Type Displacement or Traction; "
+                  "'" << key << "/Data' = 'Exact solution' is for Type Displacement, Traction or "
+                      << "Components; "
                       << "Type " << type
                       << " takes 'Value' or 'Expression' (one number or formula).");
       SC_THROW_IF(bc.fromExactSolution && (hasValue || hasExpression), InputError,
@@ -245,7 +278,7 @@ BoundaryConditions BoundaryConditions::fromParameters(const Teuchos::ParameterLi
       SC_THROW_IF(hasValue || hasExpression || bc.fromExactSolution, InputError,
                   "'" << key << "/" << given << "' is given, but Type '" << type
                       << "' takes no data; remove it or use Type Displacement, Traction, "
-                      << "Pressure or Normal displacement.");
+                      << "Pressure, Normal displacement or Components.");
     }
     bcs.conditions.push_back(bc);
   }
@@ -312,7 +345,10 @@ void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>&
   for (const auto& name : meshBoundaries) {
     const auto it = std::find_if(conditions.begin(), conditions.end(),
                                  [&](const BoundaryCondition& c) { return c.boundary == name; });
-    if (it == conditions.end() || (it->type != BoundaryType::Displacement && !it->inNormalFrame()))
+    // A Components part counts as a Displacement part, even with a traction component: that
+    // component fixes c only where it is not tangential (c n_i ≠ 0), which is not checked here.
+    if (it == conditions.end() || (it->type != BoundaryType::Displacement &&
+                                   it->type != BoundaryType::Components && !it->inNormalFrame()))
       return;  // a traction (given, pressure, zero or contact) part fixes the mean pressure
   }
   SC_THROW_IF(
@@ -323,6 +359,9 @@ void BoundaryConditions::checkPressureDetermined(const std::vector<std::string>&
                       boundariesOfType(BoundaryType::NormalDisplacement).empty()
                   ? ""
                   : "; Symmetry and Normal displacement parts count as such: c I n = c n is normal")
+          << (boundariesOfType(BoundaryType::Components).empty()
+                  ? ""
+                  : "; Components parts count as such, also with a traction component")
           << "): the stress is then determined only up to a "
           << "constant pressure (the compliance of an incompressible material vanishes on "
           << "the identity) and the discrete problem is singular. Give at least one part "
@@ -393,8 +432,27 @@ void BoundaryCondition::evaluate(const double* x, const double* n, int dim,
       out[i] = g * n[i];
     break;
   }
+  case BoundaryType::Components:
+    if (fromExactSolution) {
+      double u[3] = {0, 0, 0}, t[3] = {0, 0, 0};
+      exact->displacement(x, u);
+      exact->traction(x, n, t);
+      for (int i = 0; i < dim; ++i)
+        out[i] = displacementComponent(i) ? u[i] : t[i];
+    } else {
+      for (int i = 0; i < dim; ++i)
+        out[i] = component(value, expression, i, x, dim);
+    }
+    break;
   default: break;
   }
+}
+
+bool BoundaryCondition::hasDisplacementComponent() const
+{
+  return type == BoundaryType::Components &&
+         std::any_of(components.begin(), components.end(),
+                     [](ComponentCondition c) { return c == ComponentCondition::Displacement; });
 }
 
 bool BoundaryCondition::isZero() const

@@ -69,18 +69,24 @@ enum class BoundaryType {
   Pressure,
   Symmetry,
   NormalDisplacement,
+  Components,
   Contact,
   Free
 };
 std::string toString(BoundaryType type);
+
+/// The condition on one global component i of a Components part: u_i = g_i (natural in the
+/// stress formulation) or (σn)_i = s_i (essential); docs/theory.md §"Loads and supports".
+enum class ComponentCondition { Displacement, Traction };
 
 class ExactSolution;
 
 /// One boundary part's condition (docs/theory.md §"The problem" and §"Loads and supports"). Its
 /// data is `value` (constants), `expression` (formulas of x, y, z) or the exact solution, one
 /// of the three: u_D (Displacement, d components), t (Traction, d) or the pressure p (Pressure,
-/// one) or g (Normal displacement: u·n = g and zero tangential traction, one). Symmetry (u·n =
-/// 0, zero tangential traction), Contact and Free take no data.
+/// one) or g (Normal displacement: u·n = g and zero tangential traction, one), or per global
+/// component g_i or s_i (Components, d, with `components` saying which). Symmetry (u·n = 0,
+/// zero tangential traction), Contact and Free take no data.
 struct BoundaryCondition {
   std::string boundary;  ///< name of the boundary part (mesh physical name)
   BoundaryType type = BoundaryType::Free;
@@ -90,10 +96,13 @@ struct BoundaryCondition {
   /// "Values per step": the constant data of every load step, row after row (docs/theory.md
   /// §"Load steps"); `value` is set from row n for step n (BoundaryConditions::atStep).
   std::vector<double> valuesPerStep;
+  /// Components: the condition of each global component (d entries: x, y(, z)).
+  std::vector<ComponentCondition> components;
 
   /// The data at the boundary point x with the outward unit normal n (d components): u_D
   /// (Displacement), t (Traction: the value, the formulas or σ(x)n of the exact solution),
-  /// −p(x) n (Pressure) or g(x) n (Normal displacement); zero for the other types. `exact` is
+  /// −p(x) n (Pressure), g(x) n (Normal displacement), or per component g_i or s_i
+  /// (Components: u_i or (σ(x)n)_i of the exact solution); zero for the other types. `exact` is
   /// needed when fromExactSolution.
   void evaluate(const double* x, const double* n, int dim, const ExactSolution* exact,
                 double* out) const;
@@ -104,6 +113,14 @@ struct BoundaryCondition {
   {
     return type == BoundaryType::Symmetry || type == BoundaryType::NormalDisplacement;
   }
+  /// Components with u_i given (the component is natural in the stress formulation).
+  bool displacementComponent(int i) const
+  {
+    return type == BoundaryType::Components &&
+           components.at(static_cast<std::size_t>(i)) == ComponentCondition::Displacement;
+  }
+  /// Components with at least one displacement component (it holds rigid motions along e_i).
+  bool hasDisplacementComponent() const;
 };
 /// "Boundary Conditions/<boundary name>/{Type, Value, Expression, Data}". Boundary parts not named
 /// in the deck are traction-free.

@@ -304,7 +304,8 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
 
   // Step 3: u^R = u_D at the nodes of Γ_D faces; at the other nodes of Symmetry / Normal
   // displacement faces the nearest value with u^R·n_j = g_j for every such part j at the node
-  // (one part: u^R − (u^R·n − g) n; u^R_a = 0 on x_a = const). All boundary faces are known on
+  // (one part: u^R − (u^R·n − g) n; u^R_a = 0 on x_a = const), and of Components faces
+  // likewise u^R·e_i = g_i for each displacement component i. All boundary faces are known on
   // every rank, so a node is set whichever element of it this rank has.
   const auto frameParts = assembly::normalFrameParts(m, data.boundaryConditions);
   std::vector<char> dirichletNode(I.overlapNodes.size(), 0);
@@ -313,7 +314,8 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
     for (int f : m.boundaryFaces()) {
       const core::BoundaryCondition* bc =
           data.boundaryConditions.find(m.boundaryName(m.faceBoundaryId(f)));
-      if (!bc || (pass == 0 ? bc->type != core::BoundaryType::Displacement : !bc->inNormalFrame()))
+      if (!bc || (pass == 0 ? bc->type != core::BoundaryType::Displacement
+                            : !bc->inNormalFrame() && !bc->hasDisplacementComponent()))
         continue;
       const int e = m.faceElements(f)[0];
       const int* faces = m.elementFaces(e);
@@ -326,17 +328,31 @@ void DisplacementReconstruction::reconstruct(assembly::ElementSolution& solution
         if (l < 0) continue;
         if (pass == 1) {
           if (dirichletNode[l]) continue;
+          auto add = [&list = frameNodes[l]](const double* normal, double g) {
+            bool seen = false;
+            for (const auto& c : list)
+              seen = seen || (c[0] == normal[0] && c[1] == normal[1] && c[2] == normal[2]);
+            if (!seen) list.push_back({normal[0], normal[1], normal[2], g});
+          };
+          if (bc->type == core::BoundaryType::Components) {
+            double g[3] = {0, 0, 0};
+            const double unusedNormal[3] = {0, 0, 0};  // the displacement components ignore it
+            bc->evaluate(&I.coords[3 * l], unusedNormal, d, data.exactSolution, g);
+            for (int i = 0; i < d; ++i)
+              if (bc->displacementComponent(i)) {
+                double axis[3] = {0, 0, 0};
+                axis[i] = 1.0;
+                add(axis, g[i]);
+              }
+            continue;
+          }
           const double* normal = frameParts.at(bc->boundary).normal.data();
           double gn[3] = {0, 0, 0};  // g n
           bc->evaluate(&I.coords[3 * l], normal, d, data.exactSolution, gn);
           double g = 0.0;
           for (int i = 0; i < d; ++i)
             g += gn[i] * normal[i];
-          auto& list = frameNodes[l];
-          bool seen = false;
-          for (const auto& c : list)
-            seen = seen || (c[0] == normal[0] && c[1] == normal[1] && c[2] == normal[2]);
-          if (!seen) list.push_back({normal[0], normal[1], normal[2], g});
+          add(normal, g);
           continue;
         }
         dirichletNode[l] = 1;

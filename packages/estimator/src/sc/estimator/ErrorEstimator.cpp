@@ -129,7 +129,9 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
       // Free faces: σ_h n = 0 exactly; contact faces: the contact contribution; Symmetry faces:
       // the tangential components are zero exactly and u^R·n = 0 at the face's nodes, hence on
       // the (flat) face: nothing to measure. Normal displacement faces: u^R·n = g at the nodes,
-      // so only the interpolation error of g, measured like a displacement's.
+      // so only the interpolation error of g, measured like a displacement's. Components faces:
+      // each displacement component like a Displacement face's (u^R_i = g_i at the nodes), each
+      // traction component like a Traction face's.
       if (!bc || bc->type == core::BoundaryType::Contact ||
           bc->type == core::BoundaryType::Symmetry ||
           (bc->type == core::BoundaryType::NormalDisplacement && bc->isZero()))
@@ -148,6 +150,20 @@ ErrorEstimate ErrorEstimator::estimateReconstructed(const assembly::MultiVector&
           rec.valueAt(e, x, u);
           for (int i = 0; i < d; ++i)
             osc += fv.weight(q) * twoMu / hF * std::pow(value[i] - u[i], 2);
+        } else if (bc->type == core::BoundaryType::Components) {
+          double u[3], sigma[9];
+          rec.valueAt(e, x, u);
+          sol.stress(fv, q, sigma);
+          for (int i = 0; i < d; ++i) {
+            if (bc->displacementComponent(i)) {
+              osc += fv.weight(q) * twoMu / hF * std::pow(value[i] - u[i], 2);
+              continue;
+            }
+            double sn = 0.0;
+            for (int j = 0; j < d; ++j)
+              sn += sigma[i * d + j] * fv.normal(q)[j];
+            osc += fv.weight(q) * hF * std::pow(value[i] - sn, 2) / twoMu;
+          }
         } else if (bc->type == core::BoundaryType::NormalDisplacement) {
           double u[3];
           rec.valueAt(e, x, u);
