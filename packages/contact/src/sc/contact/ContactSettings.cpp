@@ -36,11 +36,16 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
                      {2, 3});
     declareRealArray(*pl, "Obstacle center", Teuchos::Array<double>(),
                      "Indenters: centre of the Circle/Sphere, a point of the Cylinder's axis "
-                     "(d components; required for them).",
+                     "(d components; required for them; an input error with Plane and Height "
+                     "function).",
                      {0, 2, 3});
-    declareReal(*pl, "Obstacle radius", 1.0, "Indenters: radius (> 0).", 0.0, true);
+    declareReal(*pl, "Obstacle radius", 1.0,
+                "Indenters: radius (> 0); a value other than 1 with Plane or Height function "
+                "is an input error.",
+                0.0, true);
     declareRealArray(*pl, "Obstacle axis", Teuchos::Array<double>(),
-                     "Cylinder (3D): direction of its axis (3 components, normalised on input).",
+                     "Cylinder (3D): direction of its axis (3 components, normalised on input; an "
+                     "input error with the other obstacles).",
                      {0, 3});
     declareExpressionArray(*pl, "Obstacle height",
                            "Height function: the formula h of its surface, y = h(x) in 2D or "
@@ -158,6 +163,27 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
         x /= a;
     }
   }
+  // Keys of another obstacle are errors, not silently ignored: the centre and radius belong to
+  // the indenters, the axis to the Cylinder. The radius has a default (1), so only another
+  // value can be told from "not given".
+  const bool indenter =
+      c.obstacle == "Circle" || c.obstacle == "Sphere" || c.obstacle == "Cylinder";
+  const char* uses = c.obstacle == "Plane" ? "a Plane takes 'Obstacle point' and 'Obstacle normal'"
+                                           : "a Height function takes 'Obstacle height' and "
+                                             "'Obstacle normal'";
+  SC_THROW_IF(!indenter && !c.obstacleCenter.empty(), core::InputError,
+              "'Contact/Obstacle center' is given, but 'Contact/Obstacle' = '"
+                  << c.obstacle << "' has no centre (" << uses
+                  << "); the centre is for 'Circle', 'Sphere' and 'Cylinder'. Remove the key.");
+  SC_THROW_IF(!indenter && c.obstacleRadius != 1.0, core::InputError,
+              "'Contact/Obstacle radius' = "
+                  << c.obstacleRadius << " is given, but 'Contact/Obstacle' = '" << c.obstacle
+                  << "' has no radius (" << uses
+                  << "); the radius is for 'Circle', 'Sphere' and 'Cylinder'. Remove the key.");
+  SC_THROW_IF(c.obstacle != "Cylinder" && !c.obstacleAxis.empty(), core::InputError,
+              "'Contact/Obstacle axis' is given, but 'Contact/Obstacle' = '"
+                  << c.obstacle
+                  << "' has no axis; the axis is for 'Cylinder' only. Remove the key.");
   c.frame = pl.get<std::string>("Frame") == "Body normal" ? ContactFrame::BodyNormal
                                                           : ContactFrame::ObstacleNormal;
   const std::string law = pl.get<std::string>("Friction law");
