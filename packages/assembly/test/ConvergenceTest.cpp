@@ -539,7 +539,8 @@ TEUCHOS_UNIT_TEST(Convergence, ComponentsDegree2)
 // Arc holding u_x (the exact displacement) and (σn)_y (the exact σ n_○, n_○ the exact circle's
 // normal), and Top (σn)_x and u_y; curved elements (Mesh/Geometry order = 2). No frame is
 // involved, so the rates are the scene's: k + 1 (a priori theory with a quadratic geometry,
-// Bernardi, SINUM 26, 1989); measured 1.98, 1.99, 2.00 on 3 levels (2 s).
+// Bernardi, SINUM 26, 1989). Two levels, the Gmsh mesh 0.25 refined once and twice (its first
+// level is pre-asymptotic: 1.74 from it); measured 1.98, 1.99, 2.00 (0.5 s).
 TEUCHOS_UNIT_TEST(Convergence, ComponentsCurvedArcDegree1)
 {
   using sc::core::ComponentCondition;
@@ -548,7 +549,7 @@ TEUCHOS_UNIT_TEST(Convergence, ComponentsCurvedArcDegree1)
   s.source = "Half disc";
   s.dim = 2;
   s.meshSize = 0.25;
-  s.levels = 3;
+  s.levels = 2;
   s.initialRefinements = 1;
   s.degree = 1;
   s.nu = 0.3;
