@@ -19,16 +19,22 @@
 //   - MueLu: smoothed-aggregation AMG, one V-cycle. Not robust (the kernel of div): offered to
 //     measure that, docs/solvers.md.
 //
-// Convergence: Belos stops at `Tolerance` on its own residual (MINRES: the preconditioned one);
-// the true relative residual ‖b − A x‖/‖b‖ of the working system is then checked, and Belos is
-// restarted from the current iterate until it is below `Tolerance` or `Maximum iterations` are
-// spent, which is a sc::core::ConvergenceError naming the method, the iterations and the residual.
+// Convergence (solveKrylov): the criterion is the true relative residual ‖b − A x‖/‖b‖ of the
+// working system ≤ `Tolerance`. Belos stops on its own residual relative to its initial one
+// (MINRES: the preconditioned one), so it is asked for the reduction that reaches `Tolerance` from
+// the initial guess, the true residual is checked after it returns, and Belos is restarted from
+// the current iterate (at most 6 times) until it is below `Tolerance`. Otherwise: a
+// sc::core::ConvergenceError naming the method, the iterations, Belos's own residual and the true
+// one — also when Belos reported convergence ("loss of accuracy"): never a solution accepted on
+// Belos's word.
 
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+#include <Tpetra_Operator_fwd.hpp>
 
 #include <sc/solvers/LinearSolver.hpp>
 
@@ -51,6 +57,25 @@ struct IterativeOptions {
   /// stressBlock).
   Teuchos::ParameterList directList;
 };
+
+/// What a Krylov solve achieved: its iterations, the true relative residual ‖b − A x‖/‖b‖ (the
+/// worst column) and Belos's own last residual (relative to its initial one).
+struct KrylovOutcome {
+  int iterations = 0;
+  double residual = 0.0;
+  double ownResidual = 0.0;
+};
+
+/// The Krylov driver of IterativeSolver (see the file comment): Belos `method` (MINRES: `prec`
+/// on the left, SPD; GMRES: on the right) on A x = b from the initial guess x, until the true
+/// relative residual is ≤ options.tolerance within options.maxIterations. Throws
+/// sc::core::ConvergenceError (on every rank) naming `name`, the iterations, Belos's residual and
+/// the true one otherwise, in particular when Belos reports convergence that the true residual
+/// does not confirm. Collective.
+KrylovOutcome solveKrylov(const std::string& method,
+                          const Teuchos::RCP<const Tpetra::Operator<>>& A,
+                          const Teuchos::RCP<const Tpetra::Operator<>>& prec, const MultiVector& b,
+                          MultiVector& x, const IterativeOptions& options, const std::string& name);
 
 class IterativeSolver : public LinearSolver {
 public:
