@@ -283,12 +283,16 @@ KrylovOutcome solveKrylov(const std::string& method, const Teuchos::RCP<const Op
   } else {
     params->set("Verbosity", static_cast<int>(Belos::Errors));
   }
+  // GMRES is flexible (FGMRES, Belos's block GMRES): it keeps the preconditioned vectors, so the
+  // solution it forms is the one its residual recurrence describes even under a preconditioner
+  // that is not one linear operator to working precision (docs/solvers.md "Iterative solver").
   if (method == "GMRES") {
     params->set("Num Blocks", options.restart);
     params->set("Maximum Restarts", options.maxIterations / std::max(1, options.restart) + 1);
+    params->set("Flexible Gmres", true);
   }
   Belos::SolverFactory<double, MultiVector, Operator> factory;
-  auto solver = factory.create(method, params);
+  auto solver = factory.create(method == "GMRES" ? "BLOCK GMRES" : method, params);
 
   const size_t nv = b.getNumVectors();
   Teuchos::Array<double> bNorm(nv), rNorm(nv);
@@ -336,8 +340,9 @@ KrylovOutcome solveKrylov(const std::string& method, const Teuchos::RCP<const Op
       // operator, seen with the stress multigrid on adaptive contact meshes, docs/solvers.md):
       // a convergence error naming the solver and the remedy, not an anonymous exception
       SC_THROW_IF(true, sc::core::ConvergenceError,
-                  name << ": the Krylov iteration broke down after " << out.iterations
-                       << " iterations (" << e.what()
+                  name << ": the Krylov iteration broke down in attempt " << attempt + 1
+                       << " (after " << out.iterations << " iterations of the attempts before; "
+                       << e.what()
                        << "). Try Linear Solver/Type = MUMPS, or a Stress block of MUMPS or KLU2.");
     }
     out.iterations += solver->getNumIters();

@@ -1,7 +1,7 @@
 #pragma once
 // Krylov solver for the 3×3 mixed system (docs/theory.md §"Linear solvers"): Belos MINRES
-// (symmetric operator, SPD preconditioner) or GMRES (contact rows: non-symmetric), preconditioned
-// by the block diagonal
+// (symmetric operator, SPD preconditioner) or flexible GMRES (contact rows: non-symmetric),
+// preconditioned by the block diagonal
 //
 //   P = diag(S_σ, 2μ M_u, 2μ M_θ),   S_σ = A + (2μ)⁻¹ B_uᵀ M_u⁻¹ B_u,
 //

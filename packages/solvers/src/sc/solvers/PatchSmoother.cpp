@@ -44,7 +44,10 @@ PatchSmoother::PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<l
     total += p.size() * p.size();
     lids += p.size();
   }
-  factors_.reserve(total);
+  if (symmetric)
+    factors_.reserve(total);
+  else
+    luFactors_.reserve(total);
   lids_.reserve(lids);
   if (!symmetric) pivots_.reserve(lids);
   Teuchos::LAPACK<int, double> lapack;
@@ -88,7 +91,10 @@ PatchSmoother::PatchSmoother(const CrsMatrix& A, const std::vector<std::vector<l
                   "stress multigrid: a patch block is singular (LAPACK getrf info " << info << ")");
       pivots_.insert(pivots_.end(), ipiv.begin(), ipiv.end());
     }
-    factors_.insert(factors_.end(), dense.begin(), dense.end());  // rounded to float
+    if (symmetric)
+      factors_.insert(factors_.end(), dense.begin(), dense.end());  // rounded to float
+    else
+      luFactors_.insert(luFactors_.end(), dense.begin(), dense.end());
   }
 }
 
@@ -99,24 +105,32 @@ void PatchSmoother::apply(const MultiVector& r, MultiVector& z, double omega, do
   const size_t nv = r.getNumVectors();
   MultiVector rov(overlapMap_, nv, false), zov(overlapMap_, nv, true);
   rov.doImport(r, *import_, Tpetra::INSERT);
-  Teuchos::LAPACK<int, float> lapack;
-  std::vector<float> x;
+  Teuchos::LAPACK<int, float> lapackFloat;
+  Teuchos::LAPACK<int, double> lapackDouble;
+  std::vector<float> xf;
+  std::vector<double> xd;
   for (size_t j = 0; j < nv; ++j) {
     const auto rv = rov.getData(j);
     auto zv = zov.getDataNonConst(j);
     std::size_t lid = 0, entry = 0;
     for (int m : sizes_) {
-      x.resize(m);
-      for (int a = 0; a < m; ++a)
-        x[a] = static_cast<float>(rv[lids_[lid + a]]);
       int info = 0;
-      if (symmetric_)
-        lapack.POTRS('L', m, 1, factors_.data() + entry, m, x.data(), m, &info);
-      else
-        lapack.GETRS('N', m, 1, factors_.data() + entry, m, pivots_.data() + lid, x.data(), m,
-                     &info);
-      for (int a = 0; a < m; ++a)
-        zv[lids_[lid + a]] += x[a];
+      if (symmetric_) {
+        xf.resize(m);
+        for (int a = 0; a < m; ++a)
+          xf[a] = static_cast<float>(rv[lids_[lid + a]]);
+        lapackFloat.POTRS('L', m, 1, factors_.data() + entry, m, xf.data(), m, &info);
+        for (int a = 0; a < m; ++a)
+          zv[lids_[lid + a]] += xf[a];
+      } else {
+        xd.resize(m);
+        for (int a = 0; a < m; ++a)
+          xd[a] = rv[lids_[lid + a]];
+        lapackDouble.GETRS('N', m, 1, luFactors_.data() + entry, m, pivots_.data() + lid, xd.data(),
+                           m, &info);
+        for (int a = 0; a < m; ++a)
+          zv[lids_[lid + a]] += xd[a];
+      }
       lid += m;
       entry += static_cast<std::size_t>(m) * m;
     }

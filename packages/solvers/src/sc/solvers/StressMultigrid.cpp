@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
 #include <memory>
+#include <sstream>
 #include <unordered_map>
 
 #include <Teuchos_LAPACK.hpp>
@@ -44,9 +48,10 @@ public:
   };
   std::vector<Level> levels;  // coarsest first
   Teuchos::RCP<DirectSolver> coarse;
-  int extendedFunctions = 0;  // coarse functions extended into their element (all levels)
-  int degree = 2;             // Chebyshev degree (smoother applications before and after)
-  double ratio = 10.0;        // λ_max / λ_min of the smoothed interval
+  int extendedFunctions = 0;        // coarse functions extended into their element (all levels)
+  int degree = 2;                   // Chebyshev degree (smoother applications before and after)
+  double ratio = 10.0;              // λ_max / λ_min of the smoothed interval
+  mutable bool skipCoarse = false;  // diagnostics: the finest level's smoothing only
 
   Teuchos::RCP<const Map> getDomainMap() const override { return levels.back().A->getDomainMap(); }
   Teuchos::RCP<const Map> getRangeMap() const override { return levels.back().A->getRangeMap(); }
@@ -69,6 +74,10 @@ public:
     const Level& L = levels[l];
     const size_t m = b.getNumVectors();
     smooth(L, b, x, true);
+    if (skipCoarse && l == static_cast<int>(levels.size()) - 1) {
+      smooth(L, b, x, false);
+      return;
+    }
     MultiVector r(b, Teuchos::Copy);
     L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
     MultiVector rc(L.P->getDomainMap(), m, false), ec(L.P->getDomainMap(), m, false);
@@ -458,6 +467,50 @@ constrainProlongation(const CrsMatrix& A, const CrsMatrix& P0, const std::vector
   return out;
 }
 
+// Diagnostics, printed by rank 0 when the environment variable SC_MULTIGRID_DIAGNOSTICS is set
+// (docs/solvers.md "Contact with the stress multigrid"): the levels, the constraint rows, λ_max per
+// level, and for the stationary iteration e ← (I − V S) e from a random error, per V-cycle, the
+// error ratio ‖e_k‖/‖e_{k−1}‖ and the residual ratio ‖S e_k‖/‖S e_{k−1}‖ (2-norms), with the
+// coarse correction and with the finest level's smoothing only.
+void printDiagnostics(const StressMultigrid& mg, const std::vector<char>& constraintRows)
+{
+  const CrsMatrix& S = *mg.levels.back().A;
+  const int rank = S.getComm()->getRank();
+  long long nConstraint = 0;
+  for (char c : constraintRows)
+    nConstraint += c != 0;
+  nConstraint = core::sumOverRanks(*S.getComm(), nConstraint);
+  std::ostringstream os;
+  os << "multigrid diagnostics: " << mg.levels.size() << " levels, " << S.getGlobalNumRows()
+     << " rows (" << nConstraint << " constraint rows), extended " << mg.extendedFunctions
+     << ", lambda_max per level:";
+  for (std::size_t l = 1; l < mg.levels.size(); ++l)
+    os << " " << mg.levels[l].lambdaMax;
+  os << "\n";
+  for (int coarse = 1; coarse >= 0; --coarse) {
+    mg.skipCoarse = coarse == 0;
+    MultiVector e(S.getDomainMap(), 1), r(S.getRangeMap(), 1), z(S.getDomainMap(), 1);
+    e.randomize();
+    Teuchos::Array<double> n0(1), n1(1), rn0(1), rn1(1);
+    os << "  " << (coarse ? "V-cycle" : "smoother only")
+       << ": per cycle, error ratio;residual ratio:";
+    for (int k = 0; k < 12; ++k) {
+      e.norm2(n0());
+      S.apply(e, r);
+      r.norm2(rn0());
+      mg.apply(r, z);
+      e.update(-1.0, z, 1.0);
+      e.norm2(n1());
+      S.apply(e, r);
+      r.norm2(rn1());
+      os << " " << std::setprecision(3) << n1[0] / n0[0] << ";" << rn1[0] / rn0[0];
+    }
+    os << "\n";
+  }
+  mg.skipCoarse = false;
+  if (rank == 0) std::cout << os.str() << std::flush;
+}
+
 }  // namespace
 
 Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
@@ -571,6 +624,8 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
   mg->coarse = createDirectSolverFromValidated(directList);
   mg->coarse->setOperator(mg->levels[0].A, symmetric);
   mg->coarse->numericFactorization();
+  if (L > 1 && std::getenv("SC_MULTIGRID_DIAGNOSTICS") != nullptr)
+    printDiagnostics(*mg, constraintRows);
   return mg;
 }
 
