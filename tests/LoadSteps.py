@@ -246,7 +246,7 @@ def restart_errors(args, checks):
     checks.check(tool.returncode == 0, "a copy of the checkpoint set to version 3")
     refusals.append(("a checkpoint of format 3", ["--restart", older],
                      r"the checkpoint '[^']*_format3/checkpoint\.h5' has 'checkpoint_version' = 3; this build "
-                     r"reads version 4 \(from version 4 on the checkpoint keeps the load step and the contact "
+                     r"reads version 5 \(from version 4 on the checkpoint keeps the load step and the contact "
                      r"points' friction history\)"))
     for what, extra, pattern in refusals:
         rc, out = launch(args, extra + ["--quiet"], mpi=False)

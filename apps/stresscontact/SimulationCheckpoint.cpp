@@ -51,12 +51,14 @@ using Json = nlohmann::ordered_json;
 // 4: the load step of the cycle (load_step, load_step_time, load_step_first_cycle,
 // load_step_complete) and each contact point's weight, centroid, friction history, r_T and
 // tangents (what the next cycle's transfer and the next step's commit read).
-constexpr long long kCheckpointVersion = 4;
+// 5: each contact point's r_N (the next step's commit makes it the previous step's r_N, from
+// which the step's first Newton update measures penetration).
+constexpr long long kCheckpointVersion = 5;
 
 // A contact point in the checkpoint (d = dimension): x (d), status, slip direction (2), index in
-// its face, the face's sorted vertices (d), weight, centroid (d), history (d), r_T (2), t1 (d),
-// t2 (d).
-int contactPointStride(int d) { return 6 * d + 7; }
+// its face, the face's sorted vertices (d), weight, centroid (d), history (d), r_T (2), r_N,
+// t1 (d), t2 (d).
+int contactPointStride(int d) { return 6 * d + 8; }
 
 std::string checkpointPath(const std::string& directory)
 {
@@ -123,8 +125,9 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
   // the refiner's state, which made every contact run killed in cycle 1 unrestartable).
   // With load steps a point also carries what friction on the slip increment needs: its history
   // r_T^{n-1} with its weight and centroid (ActiveSetSolver::transferState places it on refined
-  // faces), and its r_T and tangents (contact::commitLoadStep makes them the next step's
-  // history). All exact doubles: the restarted run computes the same numbers.
+  // faces), and its r_T, r_N and tangents (contact::commitLoadStep makes them the next step's
+  // history, and r_N its previousRN). All exact doubles: the restarted run computes the same
+  // numbers.
   const int d = settings_.problem.dimension;
   std::vector<double> mine;
   static const std::vector<contact::ContactPoint> none;
@@ -143,6 +146,7 @@ void Simulation::writeCheckpoint(int cycle, const std::vector<int>& marked, bool
     mine.insert(mine.end(), p.history.begin(), p.history.begin() + d);
     mine.push_back(p.rT[0]);
     mine.push_back(p.rT[1]);
+    mine.push_back(p.rN);
     mine.insert(mine.end(), p.t1.begin(), p.t1.begin() + d);
     mine.insert(mine.end(), p.t2.begin(), p.t2.begin() + d);
   }
@@ -347,6 +351,7 @@ int Simulation::readCheckpoint(std::vector<int>& marked)
         (*v)[i] = points[at++];
     p.rT = {points[at], points[at + 1]};
     at += 2;
+    p.rN = points[at++];
     for (auto* v : {&p.t1, &p.t2})
       for (int i = 0; i < d; ++i)
         (*v)[i] = points[at++];

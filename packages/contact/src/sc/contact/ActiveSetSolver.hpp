@@ -113,6 +113,12 @@ public:
   /// ConvergenceError (the loads pull the body off the obstacle: no equilibrium).
   void setContactHoldsBody(bool holds) { holdsBody_ = holds; }
 
+  /// The first cycle of a load step after the first (the points carry the step before's state
+  /// and its r_N, previousRN): the first Newton update damps the entry of free points into
+  /// contact (docs/contact.md "Load steps"). Convergence is decided by the undamped update, so
+  /// the solution is the same; only the Newton path changes.
+  void setLoadStepStart(bool start) { loadStepStart_ = start; }
+
   const std::vector<ContactPoint>& points() const { return points_; }
   /// True if the points' coefficients are Bernstein coefficients of each face's traction
   /// (useBernsteinConstraints), false if they are its values at the face's DOF points.
@@ -123,7 +129,12 @@ public:
 
 private:
   void evaluate(const CrsMatrix& K, const MultiVector& b, const MultiVector& x);
-  int updateState(bool allowFlipRemedy);
+  /// `dampedEntry`: a free point's penetration is measured at kEntryDamping of the way from
+  /// previousRN to r_N (the first update of a load step, firstUpdateOfLoadStep).
+  int updateState(bool allowFlipRemedy, bool dampedEntry = false);
+  /// The first update of a load step (setLoadStepStart): the undamped update; if it changes
+  /// the state, the damped-entry update instead, unless that one changes nothing.
+  int firstUpdateOfLoadStep();
   void solveActiveSet(const CrsMatrix& K, const MultiVector& b, solvers::LinearSolver& solver,
                       MultiVector& x);
   /// One Newton step's linear solve with the solver's operator, by the fixed or the balanced rule
@@ -175,6 +186,7 @@ private:
   ContactStatistics stats_;
   StepCallback stepCallback_;
   bool holdsBody_ = false;
+  bool loadStepStart_ = false;
   BalancedStopping* balanced_ = nullptr;
   double meshSize_ = 0.0;  ///< the diagonal of the mesh's bounding box
 };

@@ -32,6 +32,8 @@ void commitLoadStep(std::vector<ContactPoint>& points)
   for (auto& p : points)
     for (int i = 0; i < 3; ++i)
       p.history[i] = p.rT[0] * p.t1[i] + p.rT[1] * p.t2[i];
+  for (auto& p : points)
+    p.previousRN = p.rN;
 }
 
 std::vector<std::string> csvColumns(int dim)

@@ -46,10 +46,15 @@ struct ContactPoint {
   std::array<double, 3> history{};
   /// `history` in this point's tangential frame (t1, t2): what r_T is compared with.
   std::array<double, 2> previousRT() const;
+  /// r_N of the end of the previous load step (zero in the first step): where the first Newton
+  /// update of a load step measures a free point's penetration from (docs/contact.md "Load
+  /// steps", the damped entry test).
+  double previousRN = 0.0;
 };
 
 /// End of a load step: every point's history becomes its current r_T (in global coordinates),
-/// so that the next step's friction acts on the increment r_T − r_T^{n−1}.
+/// so that the next step's friction acts on the increment r_T − r_T^{n−1}, and its previousRN its
+/// current r_N.
 void commitLoadStep(std::vector<ContactPoint>& points);
 
 /// The columns of the contact CSV (docs/output.md): x, y[, z], sigma_n, sigma_t[, sigma_t2],

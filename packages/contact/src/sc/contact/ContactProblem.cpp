@@ -23,6 +23,7 @@ void ContactProblem::refined(const mesh::SimplexMesh& previous, const mesh::Simp
 void ContactProblem::commitLoadStep(const mesh::SimplexMesh& mesh)
 {
   contact::commitLoadStep(points_);
+  stepStart_ = true;
   // The same mesh: every contact face is its own parent.
   parents_.assign(mesh.numFaces(), -1);
   for (int f : mesh.boundaryFaces())
@@ -41,6 +42,7 @@ void ContactProblem::setUp(const disc::MixedElasticitySpace& space, const Contac
   solver_->setContactHoldsBody(holdsBody_);
   solver_->setBalancedStopping(balanced_);
   if (callback_) solver_->setStepCallback(callback_);
+  solver_->setLoadStepStart(stepStart_);
 }
 
 void ContactProblem::transferState()
@@ -54,6 +56,7 @@ void ContactProblem::solve(const Tpetra::CrsMatrix<>& K, const Tpetra::MultiVect
                            solvers::LinearSolver& linearSolver, Tpetra::MultiVector<>& x)
 {
   solver_->solve(K, b, linearSolver, x);
+  stepStart_ = false;
   points_ = solver_->points();
 }
 

@@ -77,6 +77,9 @@ private:
   std::vector<std::string> boundaries_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   bool holdsBody_ = false;
+  /// Set by commitLoadStep until the next solve: the cycle is a later load step's first
+  /// (ActiveSetSolver::setLoadStepStart).
+  bool stepStart_ = false;
   ActiveSetSolver::StepCallback callback_;
   BalancedStopping* balanced_ = nullptr;
   std::unique_ptr<ActiveSetSolver> solver_;

@@ -18,12 +18,12 @@ void transferContactState(std::vector<ContactPoint>& points,
                           const Teuchos::Comm<int>& comm)
 {
   // Every rank's previous points, as (parent face, index in its face, x, status, direction,
-  // centroid, load-step history per weight): the partition changes between cycles, so a new
-  // face's parent may have lived on any rank. The list is O(contact points), like the
-  // replicated mesh.
+  // centroid, load-step history per weight, previous step's r_N and weight): the partition
+  // changes between cycles, so a new face's parent may have lived on any rank. The list is
+  // O(contact points), like the replicated mesh.
   const int d = mesh.dim();
-  const int stride = 3 * d + 5;
-  const int centroidAt = d + 5, historyAt = 2 * d + 5;
+  const int stride = 3 * d + 7;
+  const int centroidAt = d + 5, historyAt = 2 * d + 5, normalAt = 3 * d + 5;
   std::vector<double> mine;
   mine.reserve(previous.size() * stride);
   for (const auto& q : previous) {
@@ -37,6 +37,8 @@ void transferContactState(std::vector<ContactPoint>& points,
     // (Points restored from a checkpoint carry no weight and no history.)
     for (int i = 0; i < d; ++i)
       mine.push_back(q.history[i] != 0.0 ? q.history[i] / q.weight : 0.0);
+    mine.push_back(q.previousRN);
+    mine.push_back(q.weight);
   }
   const auto all = core::gatherAllConcatenated(comm, mine);
   const std::size_t n = all.size() / stride;
@@ -99,6 +101,11 @@ void transferContactState(std::vector<ContactPoint>& points,
     }
     p.status = static_cast<PointStatus>(static_cast<int>(all[chosen * stride + 2 + d]));
     p.direction = {all[chosen * stride + 3 + d], all[chosen * stride + 4 + d]};
+    // The previous step's r_N (read only by a load step's first Newton update, on the mesh of
+    // the step before: there it is the nearest point's value itself, the same point's); on a
+    // refined face the nearest point's value per weight, times this point's weight.
+    const double rN = all[chosen * stride + normalAt], w = all[chosen * stride + normalAt + 1];
+    p.previousRN = (w == p.weight || rN == 0.0 || w <= 0.0) ? rN : rN / w * p.weight;
     // The load-step history: the parent face's per-weight values, placed at their weights'
     // centroids, fitted by an affine function of the position on the face (least squares) and
     // evaluated at this point's centroid, times its weight. Exact for a tangential trace that is
