@@ -199,6 +199,23 @@ const T* anyPtr(const Teuchos::ParameterEntry& e)
   return e.getAny(false).type() == typeid(T) ? &Teuchos::any_cast<T>(e.getAny(false)) : nullptr;
 }
 
+// "2 or 3": the lengths an array key may have.
+std::string lengthsText(const std::vector<int>& sizes)
+{
+  std::ostringstream os;
+  for (std::size_t i = 0; i < sizes.size(); ++i)
+    os << (i ? " or " : "") << sizes[i];
+  return os.str();
+}
+
+// An array key's length against the allowed ones (none: any length).
+void checkArrayLength(const std::string& key, const Teuchos::ParameterEntry& entry, int n,
+                      const std::vector<int>& sizes)
+{
+  SC_THROW_IF(!sizes.empty() && std::find(sizes.begin(), sizes.end(), n) == sizes.end(), InputError,
+              "'" << key << "' = " << valueOf(entry) << " has " << n << " entries; it must have "
+                  << lengthsText(sizes) << ".");
+}
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -289,10 +306,8 @@ RealArrayValidator::RealArrayValidator(std::vector<int> allowedSizes)
 
 void RealArrayValidator::printDoc(const std::string& doc, std::ostream& out) const
 {
-  out << "# " << doc << "\n# Array(double) of " << (sizes_.empty() ? "any length" : "length");
-  for (std::size_t i = 0; i < sizes_.size(); ++i)
-    out << (i ? " or " : " ") << sizes_[i];
-  out << "\n";
+  out << "# " << doc << "\n# Array(double) of "
+      << (sizes_.empty() ? "any length" : "length " + lengthsText(sizes_)) << "\n";
 }
 
 void RealArrayValidator::validate(const Teuchos::ParameterEntry& entry,
@@ -303,15 +318,7 @@ void RealArrayValidator::validate(const Teuchos::ParameterEntry& entry,
   SC_THROW_IF(!v, InputError,
               "'" << sublistName << "/" << paramName << "' must be an Array(double) such as "
                   << "\"{0, -0.01}\", got " << valueOf(entry));
-  const int n = static_cast<int>(v->size());
-  if (!sizes_.empty() && std::find(sizes_.begin(), sizes_.end(), n) == sizes_.end()) {
-    std::ostringstream os;
-    for (std::size_t i = 0; i < sizes_.size(); ++i)
-      os << (i ? " or " : "") << sizes_[i];
-    SC_THROW_IF(true, InputError,
-                "'" << sublistName << "/" << paramName << "' = " << valueOf(entry) << " has " << n
-                    << " entries; it must have " << os.str() << ".");
-  }
+  checkArrayLength(sublistName + "/" + paramName, entry, static_cast<int>(v->size()), sizes_);
   for (double x : *v)
     SC_THROW_IF(!std::isfinite(x), InputError,
                 "'" << sublistName << "/" << paramName << "' = " << valueOf(entry)
@@ -326,10 +333,8 @@ ChoiceArrayValidator::ChoiceArrayValidator(std::vector<std::string> choices,
 
 void ChoiceArrayValidator::printDoc(const std::string& doc, std::ostream& out) const
 {
-  out << "# " << doc << "\n# Array(string) of " << quotedList(choices_) << ", of length";
-  for (std::size_t i = 0; i < sizes_.size(); ++i)
-    out << (i ? " or " : " ") << sizes_[i];
-  out << "\n";
+  out << "# " << doc << "\n# Array(string) of " << quotedList(choices_) << ", of length"
+      << (sizes_.empty() ? "" : " " + lengthsText(sizes_)) << "\n";
 }
 
 void ChoiceArrayValidator::validate(const Teuchos::ParameterEntry& entry,
@@ -341,15 +346,7 @@ void ChoiceArrayValidator::validate(const Teuchos::ParameterEntry& entry,
   SC_THROW_IF(!v, InputError,
               "'" << key << "' must be an Array(string) such as \"{" << choices_.front() << ", "
                   << choices_.back() << "}\", got " << valueOf(entry));
-  const int n = static_cast<int>(v->size());
-  if (!sizes_.empty() && std::find(sizes_.begin(), sizes_.end(), n) == sizes_.end()) {
-    std::ostringstream os;
-    for (std::size_t i = 0; i < sizes_.size(); ++i)
-      os << (i ? " or " : "") << sizes_[i];
-    SC_THROW_IF(true, InputError,
-                "'" << key << "' = " << valueOf(entry) << " has " << n << " entries; it must have "
-                    << os.str() << ".");
-  }
+  checkArrayLength(key, entry, static_cast<int>(v->size()), sizes_);
   const auto entries = trimmedEntries(*v);
   for (std::size_t i = 0; i < entries.size(); ++i)
     if (std::find(choices_.begin(), choices_.end(), entries[i]) == choices_.end()) {
