@@ -25,13 +25,13 @@ using sc::solvers::CrsMatrix;
 using sc::solvers::Map;
 using sc::solvers::MultiVector;
 
-// Y = X on the unknowns with global index < keep, weight·X on the others: with a tiny weight,
-// symmetric positive definite but nearly singular, so a preconditioned residual hardly sees the
-// true one on the other unknowns.
-class PartialIdentity : public Tpetra::Operator<> {
+// A diagonal preconditioner: the identity, or (`varying`) one that is not one linear operator,
+// y_i = (1 + ((i + k) mod 3)/2) x_i at its k-th application (i the global index), a different SPD
+// diagonal each time (the single-precision patch smoother was not one linear operator to
+// rounding, docs/solvers.md "Contact with the stress multigrid").
+class DiagonalScale : public Tpetra::Operator<> {
 public:
-  PartialIdentity(Teuchos::RCP<const Map> map, long long keep, double weight = 0.0)
-      : map_(std::move(map)), keep_(keep), weight_(weight)
+  DiagonalScale(Teuchos::RCP<const Map> map, bool varying) : map_(std::move(map)), varying_(varying)
   {
   }
   Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
@@ -43,16 +43,18 @@ public:
       const auto x = X.getData(j);
       auto y = Y.getDataNonConst(j);
       for (size_t i = 0; i < map_->getNodeNumElements(); ++i) {
-        const bool kept = map_->getGlobalElement(static_cast<int>(i)) < keep_;
-        y[i] = (beta == 0.0 ? 0.0 : beta * y[i]) + alpha * (kept ? 1.0 : weight_) * x[i];
+        const long long g = map_->getGlobalElement(static_cast<int>(i));
+        const double c = varying_ ? 1.0 + 0.5 * static_cast<double>((g + calls_) % 3) : 1.0;
+        y[i] = (beta == 0.0 ? 0.0 : beta * y[i]) + alpha * c * x[i];
       }
     }
+    ++calls_;
   }
 
 private:
   Teuchos::RCP<const Map> map_;
-  long long keep_;
-  double weight_;
+  bool varying_;
+  mutable long long calls_ = 0;
 };
 
 struct Problem {
@@ -93,19 +95,15 @@ sc::solvers::IterativeOptions options(int maxIterations)
   return o;
 }
 
-Teuchos::RCP<const Tpetra::Operator<>> identity(const Problem& p)
-{
-  return Teuchos::rcp(new PartialIdentity(p.A->getRowMap(), p.A->getGlobalNumRows()));
-}
-
 // A consistent preconditioner (the identity): accepted, and the true residual meets the tolerance.
 TEUCHOS_UNIT_TEST(Krylov, ConvergedMeansTrueResidual)
 {
   for (const std::string method : {"MINRES", "GMRES"}) {
     const auto p = laplacian();
     MultiVector x(p.A->getRowMap(), 1, true);
-    const auto o = sc::solvers::solveKrylov(method, p.A, identity(p), *p.b, x, options(1000),
-                                            method + "/identity");
+    const auto o = sc::solvers::solveKrylov(
+        method, p.A, Teuchos::rcp(new DiagonalScale(p.A->getRowMap(), false)), *p.b, x,
+        options(1000), method + "/identity");
     out << method << ": " << o.iterations << " iterations, true residual " << o.residual
         << ", Belos's own " << o.ownResidual << "\n";
     TEST_COMPARE(o.residual, <=, 1e-8);
@@ -113,35 +111,6 @@ TEUCHOS_UNIT_TEST(Krylov, ConvergedMeansTrueResidual)
     TEST_COMPARE(o.iterations, >, 0);
   }
 }
-
-// A preconditioner that is not one linear operator: y_i = (1 + ((i + k) mod 3)/2) x_i at its k-th
-// application (i the global index), a different SPD diagonal each time (the single-precision
-// patch smoother was not one linear operator to rounding, docs/solvers.md "Contact with the
-// stress multigrid").
-class VaryingScale : public Tpetra::Operator<> {
-public:
-  explicit VaryingScale(Teuchos::RCP<const Map> map) : map_(std::move(map)) {}
-  Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
-  Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp = Teuchos::NO_TRANS,
-             double alpha = 1.0, double beta = 0.0) const override
-  {
-    for (size_t j = 0; j < X.getNumVectors(); ++j) {
-      const auto x = X.getData(j);
-      auto y = Y.getDataNonConst(j);
-      for (size_t i = 0; i < map_->getNodeNumElements(); ++i) {
-        const long long g = map_->getGlobalElement(static_cast<int>(i));
-        const double c = 1.0 + 0.5 * static_cast<double>((g + calls_) % 3);
-        y[i] = (beta == 0.0 ? 0.0 : beta * y[i]) + alpha * c * x[i];
-      }
-    }
-    ++calls_;
-  }
-
-private:
-  Teuchos::RCP<const Map> map_;
-  mutable long long calls_ = 0;
-};
 
 // MINRES assumes one fixed preconditioner: under this one it does not converge (measured: a true
 // residual of 6e-4 after 1000 iterations). A ConvergenceError naming the method, the iterations,
@@ -151,8 +120,8 @@ TEUCHOS_UNIT_TEST(Krylov, InconsistentPreconditionerIsAnError)
   const auto p = laplacian();
   MultiVector x(p.A->getRowMap(), 1, true);
   try {
-    sc::solvers::solveKrylov("MINRES", p.A, Teuchos::rcp(new VaryingScale(p.A->getRowMap())), *p.b,
-                             x, options(1000), "MINRES/varying");
+    sc::solvers::solveKrylov("MINRES", p.A, Teuchos::rcp(new DiagonalScale(p.A->getRowMap(), true)),
+                             *p.b, x, options(1000), "MINRES/varying");
     TEST_ASSERT(false);
   } catch (const sc::core::ConvergenceError& e) {
     const std::string what = e.what();
@@ -172,9 +141,9 @@ TEUCHOS_UNIT_TEST(Krylov, GmresToleratesAVaryingPreconditioner)
 {
   const auto p = laplacian();
   MultiVector x(p.A->getRowMap(), 1, true);
-  const auto o =
-      sc::solvers::solveKrylov("GMRES", p.A, Teuchos::rcp(new VaryingScale(p.A->getRowMap())), *p.b,
-                               x, options(1000), "GMRES/varying");
+  const auto o = sc::solvers::solveKrylov("GMRES", p.A,
+                                          Teuchos::rcp(new DiagonalScale(p.A->getRowMap(), true)),
+                                          *p.b, x, options(1000), "GMRES/varying");
   out << "GMRES under the varying preconditioner: " << o.iterations << " iterations, true residual "
       << o.residual << "\n";
   TEST_COMPARE(trueRelativeResidual(p, x), <=, 1e-8);
@@ -187,7 +156,9 @@ TEUCHOS_UNIT_TEST(Krylov, IterationLimitIsAnError)
     const auto p = laplacian();
     MultiVector x(p.A->getRowMap(), 1, true);
     try {
-      sc::solvers::solveKrylov(method, p.A, identity(p), *p.b, x, options(5), method);
+      sc::solvers::solveKrylov(method, p.A,
+                               Teuchos::rcp(new DiagonalScale(p.A->getRowMap(), false)), *p.b, x,
+                               options(5), method);
       TEST_ASSERT(false);
     } catch (const sc::core::ConvergenceError& e) {
       const std::string what = e.what();
@@ -206,8 +177,9 @@ TEUCHOS_UNIT_TEST(Krylov, NearlyConvergedGuessTakesFewIterations)
 {
   const auto p = laplacian();
   MultiVector x(p.A->getRowMap(), 1, true);
-  const auto fromZero =
-      sc::solvers::solveKrylov("MINRES", p.A, identity(p), *p.b, x, options(1000), "MINRES");
+  const auto fromZero = sc::solvers::solveKrylov(
+      "MINRES", p.A, Teuchos::rcp(new DiagonalScale(p.A->getRowMap(), false)), *p.b, x,
+      options(1000), "MINRES");
   // x* + δ, δ random with ‖A δ‖ = 5e-8 ‖b‖
   MultiVector delta(p.A->getRowMap(), 1), Ad(p.A->getRowMap(), 1);
   delta.randomize();
@@ -218,8 +190,9 @@ TEUCHOS_UNIT_TEST(Krylov, NearlyConvergedGuessTakesFewIterations)
   MultiVector near(*p.exact, Teuchos::Copy);
   near.update(5e-8 * bn[0] / adn[0], delta, 1.0);
   const double start = trueRelativeResidual(p, near);
-  const auto fromNear =
-      sc::solvers::solveKrylov("MINRES", p.A, identity(p), *p.b, near, options(1000), "MINRES");
+  const auto fromNear = sc::solvers::solveKrylov(
+      "MINRES", p.A, Teuchos::rcp(new DiagonalScale(p.A->getRowMap(), false)), *p.b, near,
+      options(1000), "MINRES");
   out << "from zero: " << fromZero.iterations << " iterations; from a guess at residual " << start
       << ": " << fromNear.iterations << " iterations, true residual " << fromNear.residual << "\n";
   TEST_COMPARE(fromNear.residual, <=, 1e-8);
