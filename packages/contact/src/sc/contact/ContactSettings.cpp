@@ -24,7 +24,9 @@ Teuchos::RCP<const Teuchos::ParameterList> ContactSettings::getValidParameters()
                   "(Obstacle normal {0, 1} / {0, 0, 1}) or above it ({0, -1} / {0, 0, -1}) "
                   "(docs/contact.md 'Height function').");
     declareRealArray(*pl, "Obstacle point", Teuchos::tuple<double>(0.0, 0.0),
-                     "A point of the obstacle plane (d components).", {2, 3});
+                     "Plane: a point of the obstacle plane (d components). A non-zero point is an "
+                     "input error with indenters and Height function.",
+                     {2, 3});
     declareRealArray(*pl, "Obstacle normal", Teuchos::tuple<double>(0.0, 1.0),
                      "Plane: its normal pointing towards the body (d components, normalised on "
                      "input; a normal pointing away from the body is an error). Height function: "
@@ -180,6 +182,17 @@ ContactSettings ContactSettings::fromParameters(const Teuchos::ParameterList& pl
                   << c.obstacleRadius << " is given, but 'Contact/Obstacle' = '" << c.obstacle
                   << "' has no radius (" << uses
                   << "); the radius is for 'Circle', 'Sphere' and 'Cylinder'. Remove the key.");
+  // 'Obstacle point' has a default ({0, 0}), so only a non-zero point can be told from "not
+  // given": an indenter is placed by its centre, a height function by its formula.
+  bool pointGiven = false;
+  for (double x : c.obstaclePoint)
+    pointGiven = pointGiven || x != 0.0;
+  SC_THROW_IF(c.obstacle != "Plane" && pointGiven, core::InputError,
+              "'Contact/Obstacle point' is given, but 'Contact/Obstacle' = '"
+                  << c.obstacle << "' has no point ("
+                  << (indenter ? "an indenter is placed by 'Obstacle center'"
+                               : "a Height function is placed by its formula 'Obstacle height'")
+                  << "); the point is for 'Plane' only. Remove the key.");
   SC_THROW_IF(c.obstacle != "Cylinder" && !c.obstacleAxis.empty(), core::InputError,
               "'Contact/Obstacle axis' is given, but 'Contact/Obstacle' = '"
                   << c.obstacle
