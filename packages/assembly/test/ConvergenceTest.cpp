@@ -624,9 +624,12 @@ TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree1)
 {
   convergence(2, 1, 4, 0.25, 1, false, 1.9, out, success);
 }
+// k = 2 on three meshes (to 99k DOFs, ~9 s): the rates are already asymptotic there (σ, div σ,
+// u: 3.01, 2.98, 2.99 at each ν; a fourth mesh, 395k DOFs and four times the cost, gives the
+// same fitted rates to two digits, measured 2026-12-07).
 TEUCHOS_UNIT_TEST(Convergence, Manufactured2DDegree2)
 {
-  convergence(2, 2, 4, 0.25, 1, false, 2.9, out, success);
+  convergence(2, 2, 3, 0.25, 1, false, 2.9, out, success);
 }
 // 3D: Gmsh meshes of size 0.5, 0.25, 0.125 rather than uniform bisection (see the header).
 TEUCHOS_UNIT_TEST(Convergence, Manufactured3DDegree1)
