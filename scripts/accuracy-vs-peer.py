@@ -45,8 +45,10 @@ def stresscontact(deck, out, xdmf):
     s = json.load(open(os.path.join(out, "summary.json")))
     c = s["cycles"][-1]
     ct = c["contact"]
-    return dt, "cycle %d, %d DOFs, P %.4f, a %.5f, p0 %.2f; %s" % (
-        c["cycle"], c["dofs"]["total"], math.hypot(*ct["force"]), ct["half_width"], ct["max_pressure"],
+    fitted = ct.get("fitted_half_width")
+    return dt, "cycle %d, %d DOFs, P %.4f, a %.5f (fitted %s), p0 %.2f; %s" % (
+        c["cycle"], c["dofs"]["total"], math.hypot(*ct["force"]), ct["half_width"],
+        "%.5f" % fitted if fitted is not None else "none", ct["max_pressure"],
         "targets met" if s["stop"]["accuracy_targets_met"] else "NOT met: " + s["stop"]["reason"])
 
 

@@ -110,8 +110,12 @@ def quantities(c):
         s = "stick_" + w
         if s in ee:
             names += [s, "equivalent_" + s]
+        if "fitted_half_width" in ee:  # 2D: the half-width fitted to the pressure profile
+            names.append("fitted_half_width")
         for name in names:
             value = norm(ct["force"]) if name == "force" else ct[name]
+            if value is None:
+                continue
             base = name[len("equivalent_"):] if name.startswith("equivalent_") else name
             q[name] = (value, ee.get(name), ct.get(base + "_resolution"))
     if not q:  # no contact: the reactions (with contact they repeat the load)
@@ -146,21 +150,23 @@ def table(scene, summary_path, last_cycle):
             u = max(u, res)
         if name in refs:
             ref, u, source = refs[name]
-        errors = [q[name][0] - ref for q in qs]
+        # None where the cycle has no value (a fitted half-width before the zone has a fit).
+        errors = [q[name][0] - ref if name in q else None for q in qs]
         cells = []
         for i, c in enumerate(cyc):
             if c["cycle"] < 3 or c["cycle"] > last_cycle:
                 continue
-            e = qs[i][name][1]
-            t = abs(errors[i])
-            if e is None:
+            e = qs[i][name][1] if name in qs[i] else None
+            if e is None or errors[i] is None:
                 cells.append("–")
                 continue
+            t = abs(errors[i])
             if t <= 2 * u:
                 cells.append("u")
                 continue
             r = e / t
-            crossing = any(0 <= k < len(errors) and errors[k] * errors[i] < 0 and abs(errors[k]) > t
+            crossing = any(0 <= k < len(errors) and errors[k] is not None and errors[k] * errors[i] < 0
+                           and abs(errors[k]) > t
                            for k in (i - 1, i + 1))
             kind = "below" if r < 1.0 else ("above" if r > 10.0 else "ok")
             counts["resolved"] += 1
@@ -170,7 +176,8 @@ def table(scene, summary_path, last_cycle):
                 counts["z_" + kind] += 1
                 # The crossing's rule: against the largest true error of this and the later
                 # tabulated cycles (the envelope the estimate stands for).
-                env = max(abs(errors[k]) for k in range(i, len(cyc)) if cyc[k]["cycle"] <= last_cycle)
+                env = max(abs(errors[k]) for k in range(i, len(cyc))
+                          if cyc[k]["cycle"] <= last_cycle and errors[k] is not None)
                 r_env = e / env
                 counts["env_" + ("below" if r_env < 1.0 else ("above" if r_env > 10.0 else "ok"))] += 1
             cells.append(("%.2g" % r) + ("" if kind == "ok" else "*") + ("z" if crossing else ""))

@@ -16,7 +16,9 @@ bars"):
 - the half-width's error bar is 1.5 × its resolution (`contact.half_width_resolution`, docs/output.md
   "Error bars"), and from the fourth cycle on it contains the half-width's true error against the
   peer's converged a = 0.07782 (docs/peer/README.md "Converged loads", the same digits on levels 1-3;
-  ± 1e-5 for its rounding and the levels).
+  ± 1e-5 for its rounding and the levels);
+- from the fourth cycle on the fitted half-width (`contact.fitted_half_width`, docs/contact.md
+  "Outputs") exists, has an error bar, and the bar contains its true error against the same a.
 """
 import argparse
 import json
@@ -90,6 +92,14 @@ def main():
         t = abs(c["contact"]["half_width"] - PEER_A)
         if ee["half_width"] + PEER_A_U < t:
             fail("cycle %d: half-width error bar %.3g below the true error %.3g" % (c["cycle"], ee["half_width"], t))
+        fitted, fe = c["contact"]["fitted_half_width"], ee.get("fitted_half_width")
+        if fitted is None or fe is None:
+            fail("cycle %d: no fitted half-width (%s) or no error bar (%s)" % (c["cycle"], fitted, fe))
+        t = abs(fitted - PEER_A)
+        if fe + PEER_A_U < t:
+            fail("cycle %d: fitted half-width %.6g, error bar %.3g below the true error %.3g" % (c["cycle"], fitted, fe, t))
+        print("cycle %d: fitted half-width %.6f, true error %.2e (peer a), error bar %.2e"
+              % (c["cycle"], fitted, t, fe))
     print("PASS")
     return 0
 

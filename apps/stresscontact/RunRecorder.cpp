@@ -68,6 +68,10 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
     if (d == 2) {
       c["contact"]["half_width_resolution"] = cs.zoneResolution;
       c["contact"]["stick_half_width_resolution"] = cs.stickZoneResolution;
+      // The half-width from the pressure profile at the zone's ends (contact::ContactSummary).
+      c["contact"]["fitted_half_width"] = cs.fittedZoneSize > 0.0
+                                              ? nlohmann::ordered_json(cs.fittedZoneSize)
+                                              : nlohmann::ordered_json(nullptr);
     }
     // Hertz's values from the computed load (contact/Hertz.hpp): the ratios say how close the
     // run is.

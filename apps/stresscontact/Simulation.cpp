@@ -288,9 +288,16 @@ void Simulation::recordSolve()
     ContactRecord& c = r.contact.emplace();
     c.points = contactProblem_->solver().points();
     c.statistics = contactProblem_->solver().statistics();
-    c.summary =
-        contact::summarizeContact(c.points, settings_.problem.dimension, contact_.obstacleNormal,
-                                  *comm_, 1e-12 * 2.0 * settings_.material.shearModulus());
+    // The pressure at each point's position, for the fitted half-width (a Bernstein control
+    // value of degree ≥ 2 is not the traction's value there).
+    std::vector<double> pressures;
+    for (const auto& v : contact::pointValues(c.points, settings_.problem.dimension,
+                                              settings_.discretization.degree,
+                                              contactProblem_->solver().bernsteinConstraints()))
+      pressures.push_back(v.pressure);
+    c.summary = contact::summarizeContact(
+        c.points, settings_.problem.dimension, contact_.obstacleNormal, *comm_,
+        1e-12 * 2.0 * settings_.material.shearModulus(), pressures);
     if (settings_.hertzRadius)
       c.hertz = contact::compareWithHertz(settings_.problem.dimension, c.summary,
                                           settings_.material, *settings_.hertzRadius);

@@ -4,6 +4,7 @@
 // outside; the resolution is half the gap between those two points (2D: the mean over the two
 // ends). Expected values by hand (analytic, from the coordinates below).
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <Teuchos_DefaultComm.hpp>
@@ -74,4 +75,29 @@ TEUCHOS_UNIT_TEST(ContactSummary, ZoneResolution3D)
   const auto inside = sc::contact::summarizeContact(all, 3, {0.0, 0.0, 1.0}, *comm);
   TEST_FLOATING_EQUALITY(inside.zoneSize, 0.1, 1e-12);
   TEST_EQUALITY(inside.zoneResolution, 0.0);
+}
+
+// 2D, the fitted half-width (ContactSummary::fittedZoneSize): points on y = 0 at x = −0.5, −0.45,
+// …, 0.5 carrying the Hertz pressure p = √(1 − x²/a²), a = 0.33, in contact where |x| < a (|x| ≤
+// 0.3), free beyond. p² = 1 − x²/a² is a parabola, so the least-squares parabola of each end is
+// exact and its zero is ±a: fitted half-width 0.33 (analytic), where the outermost point's
+// midpoint gives (0.3 + 0.35)/2 = 0.325. In 3D there is none (0).
+TEUCHOS_UNIT_TEST(ContactSummary, FittedHalfWidth2D)
+{
+  const auto comm = Teuchos::DefaultComm<int>::getComm();
+  const double a = 0.33;
+  std::vector<ContactPoint> points;
+  std::vector<double> pressures;
+  if (comm->getRank() == 0)
+    for (int i = -10; i <= 10; ++i) {
+      const double x = 0.05 * i;
+      const bool in = std::abs(x) < a;
+      points.push_back(point(x, 0.0, 0.0, in ? PointStatus::Slip : PointStatus::Free));
+      pressures.push_back(in ? std::sqrt(1.0 - x * x / (a * a)) : 0.0);
+    }
+  const auto s = sc::contact::summarizeContact(points, 2, {0.0, 1.0, 0.0}, *comm, 0.0, pressures);
+  TEST_FLOATING_EQUALITY(s.zoneSize, 0.325, 1e-12);
+  TEST_FLOATING_EQUALITY(s.fittedZoneSize, a, 1e-10);
+  const auto s3 = sc::contact::summarizeContact(points, 3, {0.0, 0.0, 1.0}, *comm, 0.0, pressures);
+  TEST_EQUALITY(s3.fittedZoneSize, 0.0);
 }

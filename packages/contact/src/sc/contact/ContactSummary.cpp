@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "sc/core/Collective.hpp"
+#include "sc/core/Error.hpp"
 
 namespace sc::contact {
 namespace {
@@ -45,12 +47,95 @@ double zoneSize(const std::vector<double>& s, const std::vector<char>& in, bool 
   return 0.5 * (right - left);
 }
 
+// One end of a 2D zone from its pressure profile (ContactSummary::fittedZoneSize): `s` the
+// coordinate increasing outwards, `p` the pressure, `in` the zone's points. The least-squares
+// parabola p² = c₀ + c₁ x + c₂ x² over the points of the zone's `positions` outermost distinct
+// positions (all of them, if the zone has fewer, but at least 3), and its smallest zero beyond
+// the middle of those positions; none where there is none.
+std::optional<double> fittedEnd(const std::vector<double>& s, const std::vector<double>& p,
+                                const std::vector<char>& in, int positions)
+{
+  std::vector<double> distinct;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (in[i]) distinct.push_back(s[i]);
+  std::sort(distinct.begin(), distinct.end());
+  double scale = 0.0;
+  for (double x : distinct)
+    scale = std::max(scale, std::abs(x));
+  // The points of two faces at one vertex are one position.
+  const double same = 1e-9 * scale;
+  distinct.erase(std::unique(distinct.begin(), distinct.end(),
+                             [same](double a, double b) { return b - a <= same; }),
+                 distinct.end());
+  const int used = std::min(positions, static_cast<int>(distinct.size()));
+  if (used < 3) return std::nullopt;
+  const double outermost = distinct.back();
+  const double innermost = distinct[distinct.size() - used];
+  const double span = outermost - innermost;
+  if (!(span > 0.0)) return std::nullopt;
+  // Normal equations in x = (s − outermost)/span (conditioning), the unknowns c₀, c₁, c₂.
+  double m[3][4] = {};
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (in[i] && s[i] >= innermost - same) {
+      const double x = (s[i] - outermost) / span, y = p[i] * p[i];
+      const double row[3] = {1.0, x, x * x};
+      for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b)
+          m[a][b] += row[a] * row[b];
+        m[a][3] += row[a] * y;
+      }
+    }
+  // Gaussian elimination with partial pivoting; a (nearly) singular system has no fit (x is in
+  // [−1, 0], so the entries are at most the number of points, m[0][0]).
+  const double tiny = 1e-12 * m[0][0];
+  for (int k = 0; k < 3; ++k) {
+    int pivot = k;
+    for (int r = k + 1; r < 3; ++r)
+      if (std::abs(m[r][k]) > std::abs(m[pivot][k])) pivot = r;
+    if (!(std::abs(m[pivot][k]) > tiny)) return std::nullopt;
+    std::swap(m[k], m[pivot]);
+    for (int r = k + 1; r < 3; ++r) {
+      const double f = m[r][k] / m[k][k];
+      for (int c = k; c < 4; ++c)
+        m[r][c] -= f * m[k][c];
+    }
+  }
+  double c[3];
+  for (int k = 2; k >= 0; --k) {
+    c[k] = m[k][3];
+    for (int j = k + 1; j < 3; ++j)
+      c[k] -= m[k][j] * c[j];
+    c[k] /= m[k][k];
+  }
+  // The zeros of c₀ + c₁ x + c₂ x², the smallest beyond the middle of the positions (x = −½).
+  std::vector<double> roots;
+  if (std::abs(c[2]) <= 1e-12 * (std::abs(c[0]) + std::abs(c[1]))) {
+    if (c[1] != 0.0) roots.push_back(-c[0] / c[1]);
+  } else {
+    const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+    if (disc < 0.0) return std::nullopt;
+    // The stable pair of formulas (no cancellation).
+    const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
+    roots.push_back(q / c[2]);
+    if (q != 0.0) roots.push_back(c[0] / q);
+  }
+  std::optional<double> end;
+  for (double x : roots)
+    if (std::isfinite(x) && x > -0.5 && (!end || outermost + x * span < *end))
+      end = outermost + x * span;
+  return end;
+}
+
 }  // namespace
 
 ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim,
                                 const std::vector<double>& obstacleNormal,
-                                const Teuchos::Comm<int>& comm, double pressureFloor)
+                                const Teuchos::Comm<int>& comm, double pressureFloor,
+                                const std::vector<double>& pressures)
 {
+  SC_THROW_IF(!pressures.empty() && pressures.size() != points.size(), core::InternalError,
+              "contact::summarizeContact: " << pressures.size() << " pressures for "
+                                            << points.size() << " points");
   ContactSummary out;
   // A point carrying no more pressure than the floor counts as free here (a zero load must not
   // report a contact zone of round-off pressures).
@@ -104,9 +189,10 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
   out.numStick = gcounts[1];
   out.numSlip = gcounts[2];
 
-  // Zone sizes need all points: gather (coordinate, status) everywhere.
+  // Zone sizes need all points: gather (coordinate, status, pressure) everywhere.
   std::vector<double> mine;
-  for (const auto& p : points) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto& p = points[k];
     double rel[3] = {0, 0, 0}, along = 0.0;
     for (int i = 0; i < dim; ++i)
       rel[i] = p.x[i] - out.center[i];
@@ -124,17 +210,27 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     }
     mine.push_back(s);
     mine.push_back(static_cast<double>(static_cast<int>(status(p))));
+    mine.push_back(pressures.empty() ? -p.sigmaN : pressures[k]);
   }
   const std::vector<double> all = core::gatherAllConcatenated(comm, mine);
   const int total = static_cast<int>(all.size());
-  std::vector<double> s;
+  std::vector<double> s, pressure;
   std::vector<char> active, stick;
-  for (int i = 0; i + 1 < total; i += 2) {
+  for (int i = 0; i + 2 < total; i += 3) {
     s.push_back(all[i]);
     active.push_back(all[i + 1] != 0.0);
     stick.push_back(all[i + 1] == 1.0);
+    pressure.push_back(all[i + 2]);
   }
   out.zoneSize = zoneSize(s, active, dim == 2, &out.zoneResolution);
+  if (dim == 2) {
+    std::vector<double> mirrored(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+      mirrored[i] = -s[i];
+    const auto right = fittedEnd(s, pressure, active, kFittedPositions);
+    const auto left = fittedEnd(mirrored, pressure, active, kFittedPositions);
+    if (right && left && *right + *left > 0.0) out.fittedZoneSize = 0.5 * (*right + *left);
+  }
   out.stickZoneSize = zoneSize(s, stick, dim == 2, &out.stickZoneResolution,
                                dim == 2 ? &out.stickZoneEnds : nullptr);
   return out;

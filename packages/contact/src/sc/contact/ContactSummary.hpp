@@ -30,6 +30,13 @@ struct ContactSummary {
   /// 2D: the stick zone's ends (−c₋, c₊) along the plane's tangent (−ν_y, ν_x), from `center`
   /// (stickZoneSize = (c₊ + c₋)/2; after a tangential load step the zone is not centred).
   std::array<double, 2> stickZoneEnds{};
+  /// 2D: the half-width from the pressure profile at the zone's ends (docs/contact.md
+  /// "Outputs"): near a Hertz-type end p ≈ C√(a − s), so p² is smooth in s and vanishes at the
+  /// edge; at each end the least-squares parabola of p² over the points of the zone's
+  /// kFittedPositions outermost positions is extrapolated to its zero, and the half-width is the
+  /// mean of the two ends. Not bound to the point spacing (the outermost-point zoneSize moves by
+  /// whole gaps). 0 in 3D and where an end has fewer than 3 positions or no such zero.
+  double fittedZoneSize = 0.0;
   double equivalentZoneSize = 0.0;       ///< from the zone's area: A/2 (2D), √(A/π) (3D)
   double equivalentStickZoneSize = 0.0;  ///< the same for the stick zone
   /// Area A of the contact zone (2D: length per unit thickness): Σ over the points in contact of
@@ -44,10 +51,17 @@ struct ContactSummary {
   long long numFree = 0, numStick = 0, numSlip = 0;
 };
 
+/// The outermost positions of each end the fitted half-width uses.
+constexpr int kFittedPositions = 6;
+
 /// `pressureFloor`: points with −σ_N ≤ pressureFloor count as free (the application passes
-/// 1e-12 × 2μ, a strain of 1e-12: a zero load then reports no zone).
+/// 1e-12 × 2μ, a strain of 1e-12: a zero load then reports no zone). `pressures`: the contact
+/// pressure −σ_N at each point's position x (contact::pointValues: with Bernstein constraints of
+/// degree ≥ 2 a control value is not the traction's value there), for the fitted half-width;
+/// empty: −sigmaN.
 ContactSummary summarizeContact(const std::vector<ContactPoint>& localPoints, int dim,
                                 const std::vector<double>& obstacleNormal,
-                                const Teuchos::Comm<int>& comm, double pressureFloor = 0.0);
+                                const Teuchos::Comm<int>& comm, double pressureFloor = 0.0,
+                                const std::vector<double>& pressures = {});
 
 }  // namespace sc::contact
