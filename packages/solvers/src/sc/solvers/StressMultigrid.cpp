@@ -38,13 +38,22 @@ using Operator = Tpetra::Operator<>;
 // the Chebyshev polynomial of degree `degree` in B_l A_l before and after the coarse correction,
 // B_l = Σ_i R_iᵀ A_{l,i}⁻¹ R_i the additive Schwarz smoother on vertex (2D) or edge (3D) patches
 // (PatchSmoother), on the interval [λ_max/ratio, λ_max] of B_l A_l; a direct solve on the
-// coarsest level. The same polynomial before and after keeps the cycle symmetric (MINRES).
+// coarsest level. The same polynomial before and after keeps the cycle symmetric (MINRES). Where
+// a coarse function was cut by the contact constraints and extended into its coarse element E (the
+// contact zone's ends), all fine DOFs of E form one block solved exactly after the pre-smoothing
+// and, in reverse order, before the post-smoothing (docs/solvers.md "Contact with the stress
+// multigrid").
 class StressMultigrid : public Operator {
 public:
   struct Level {
     Teuchos::RCP<const CrsMatrix> A, P;  // P: from level l−1 into l
     std::shared_ptr<const PatchSmoother> B;
-    double lambdaMax = 1.0;  // upper bound of the spectrum of B A (power iteration × 1.1)
+    // Zone-end blocks: one exact block solve per block, applied one after the other (each a
+    // PatchSmoother of at most one block on every rank), after the pre-smoothing and in reverse
+    // order before the post-smoothing.
+    std::vector<std::shared_ptr<const PatchSmoother>> zoneBlocks;
+    int largestZoneBlock = 0;  // DOFs (this rank)
+    double lambdaMax = 1.0;    // upper bound of the spectrum of B A (power iteration × 1.1)
   };
   std::vector<Level> levels;  // coarsest first
   Teuchos::RCP<DirectSolver> coarse;
@@ -74,7 +83,9 @@ public:
     const Level& L = levels[l];
     const size_t m = b.getNumVectors();
     smooth(L, b, x, true);
+    blockSweep(L, b, x, true);
     if (skipCoarse && l == static_cast<int>(levels.size()) - 1) {
+      blockSweep(L, b, x, false);
       smooth(L, b, x, false);
       return;
     }
@@ -84,7 +95,22 @@ public:
     L.P->apply(r, rc, Teuchos::TRANS);
     vcycle(l - 1, rc, ec);
     L.P->apply(ec, x, Teuchos::NO_TRANS, 1.0, 1.0);
+    blockSweep(L, b, x, false);
     smooth(L, b, x, false);
+  }
+
+  // x ← x + R_kᵀ A_k⁻¹ R_k (b − A x) for the zone-end blocks k in turn (reversed: `forward` false).
+  void blockSweep(const Level& L, const MultiVector& b, MultiVector& x, bool forward) const
+  {
+    const int n = static_cast<int>(L.zoneBlocks.size());
+    if (n == 0) return;
+    MultiVector r(b.getMap(), b.getNumVectors(), false);
+    for (int i = 0; i < n; ++i) {
+      const int k = forward ? i : n - 1 - i;
+      Tpetra::deep_copy(r, b);
+      L.A->apply(x, r, Teuchos::NO_TRANS, -1.0, 1.0);
+      L.zoneBlocks[k]->apply(r, x, 1.0, 1.0);
+    }
   }
 
   // x ← x + p(B A) B (b − A x) with the Chebyshev iteration of `degree` steps on
@@ -153,6 +179,7 @@ struct ConstrainedProlongation {
   Teuchos::RCP<CrsMatrix> P;
   std::vector<char> coarseContact;  // per local row of P's domain map
   int extended = 0;                 // functions extended (global)
+  std::vector<char> zoneElements;   // per coarse element of this rank: a function was extended
 };
 
 ConstrainedProlongation
@@ -215,6 +242,7 @@ constrainProlongation(const CrsMatrix& A, const CrsMatrix& P0, const std::vector
   coarseLargest.doExport(largest, toDomain, Tpetra::ABSMAX);
   Vector keep(domainMap, false);
   ConstrainedProlongation out;
+  out.zoneElements.assign(coarseElements.size(), 0);
   std::vector<GO> cutMine;
   {
     const auto c0 = coarseFlags.getData(0), c1 = coarseFlags.getData(1),
@@ -345,7 +373,8 @@ constrainProlongation(const CrsMatrix& A, const CrsMatrix& P0, const std::vector
       xbs[k] = XuB.getData(k);
       cbs[k] = XB.getData(k);
     }
-    for (const auto& c : coarseElements) {
+    for (std::size_t ci = 0; ci < coarseElements.size(); ++ci) {
+      const auto& c = coarseElements[ci];
       // the functions that lost a significant part on E's boundary
       std::vector<int> home;
       for (int k = 0; k < nc; ++k) {
@@ -359,6 +388,7 @@ constrainProlongation(const CrsMatrix& A, const CrsMatrix& P0, const std::vector
       }
       const int m = static_cast<int>(c.interior.size());
       if (home.empty() || m == 0) continue;
+      out.zoneElements[ci] = 1;
       {
         // The extension depends only on the values on E's boundary: a function whose boundary
         // values are a combination of the others' (two functions of a coarse face that keep the
@@ -469,9 +499,11 @@ constrainProlongation(const CrsMatrix& A, const CrsMatrix& P0, const std::vector
 
 // Diagnostics, printed by rank 0 when the environment variable SC_MULTIGRID_DIAGNOSTICS is set
 // (docs/solvers.md "Contact with the stress multigrid"): the levels, the constraint rows, λ_max per
-// level, and for the stationary iteration e ← (I − V S) e from a random error, per V-cycle, the
-// error ratio ‖e_k‖/‖e_{k−1}‖ and the residual ratio ‖S e_k‖/‖S e_{k−1}‖ (2-norms), with the
-// coarse correction and with the finest level's smoothing only.
+// level, the zone-end blocks per level, and for the stationary iteration e ← (I − V S) e from a
+// random error, per V-cycle, the error ratio ‖e_k‖/‖e_{k−1}‖, the residual ratio
+// ‖S e_k‖/‖S e_{k−1}‖ (2-norms) and the energy ratio (e_kᵀ S e_k / e_{k−1}ᵀ S e_{k−1})^{1/2}
+// (a norm when S is symmetric), with the coarse correction and with the finest level's smoothing
+// only.
 void printDiagnostics(const StressMultigrid& mg, const std::vector<char>& constraintRows)
 {
   const CrsMatrix& S = *mg.levels.back().A;
@@ -486,6 +518,10 @@ void printDiagnostics(const StressMultigrid& mg, const std::vector<char>& constr
      << ", lambda_max per level:";
   for (std::size_t l = 1; l < mg.levels.size(); ++l)
     os << " " << mg.levels[l].lambdaMax;
+  os << ", zone blocks per level:";
+  for (std::size_t l = 1; l < mg.levels.size(); ++l)
+    os << " " << mg.levels[l].zoneBlocks.size() << " (largest " << mg.levels[l].largestZoneBlock
+       << ")";
   os << "\n";
   for (int coarse = 1; coarse >= 0; --coarse) {
     mg.skipCoarse = coarse == 0;
@@ -493,17 +529,21 @@ void printDiagnostics(const StressMultigrid& mg, const std::vector<char>& constr
     e.randomize();
     Teuchos::Array<double> n0(1), n1(1), rn0(1), rn1(1);
     os << "  " << (coarse ? "V-cycle" : "smoother only")
-       << ": per cycle, error ratio;residual ratio:";
+       << ": per cycle, error ratio;residual ratio;energy ratio:";
+    Teuchos::Array<double> en0(1), en1(1);
     for (int k = 0; k < 12; ++k) {
       e.norm2(n0());
       S.apply(e, r);
       r.norm2(rn0());
+      e.dot(r, en0());
       mg.apply(r, z);
       e.update(-1.0, z, 1.0);
       e.norm2(n1());
       S.apply(e, r);
       r.norm2(rn1());
-      os << " " << std::setprecision(3) << n1[0] / n0[0] << ";" << rn1[0] / rn0[0];
+      e.dot(r, en1());
+      os << " " << std::setprecision(3) << n1[0] / n0[0] << ";" << rn1[0] / rn0[0] << ";"
+         << std::sqrt(std::abs(en1[0] / en0[0]));
     }
     os << "\n";
   }
@@ -533,6 +573,9 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
   mg->levels.resize(L);
   mg->levels[L - 1].A = S;
   std::vector<char> contact;  // per row of the level being coarsened: a contact coordinate's
+  // per level: the fine DOFs (interior and boundary) of each coarse element of this rank into
+  // which a cut function was extended (the contact zone's ends), smoothed as one block each
+  std::vector<std::vector<std::vector<long long>>> zoneBlocks(L);
   for (int l = L - 1; l >= 1; --l) {
     SC_THROW_IF(levels[l].prolongation.is_null(), sc::core::InternalError,
                 "stress multigrid: level " << l << " has no prolongation");
@@ -581,6 +624,15 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
     auto cp = constrainProlongation(A, *P, masked, contact, levels[l].coarseElements);
     P = cp.P;
     contact = std::move(cp.coarseContact);
+    for (std::size_t ci = 0; ci < cp.zoneElements.size(); ++ci)
+      if (cp.zoneElements[ci]) {
+        const auto& c = levels[l].coarseElements[ci];
+        std::vector<long long> ids(c.interior.begin(), c.interior.end());
+        ids.insert(ids.end(), c.boundary.begin(), c.boundary.end());
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        zoneBlocks[l].push_back(std::move(ids));
+      }
     mg->extendedFunctions += cp.extended;
     auto AP = Teuchos::rcp(new CrsMatrix(A.getRowMap(), 0));
     Tpetra::MatrixMatrix::Multiply(A, false, *P, false, *AP);
@@ -620,6 +672,16 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
     // 15 power steps underestimate λ_max; the Chebyshev polynomial grows outside its interval,
     // so the bound is raised by 10% (Ifpack2's default boost factor).
     lev.lambdaMax = 1.1 * largestEigenvalue(*lev.B, *lev.A, 15);
+    const auto& mine = zoneBlocks[l];
+    const int n = core::maxOverRanks(*lev.A->getComm(), static_cast<int>(mine.size()));
+    for (int k = 0; k < n; ++k) {
+      std::vector<std::vector<long long>> one;
+      if (k < static_cast<int>(mine.size())) {
+        one.push_back(mine[k]);
+        lev.largestZoneBlock = std::max(lev.largestZoneBlock, static_cast<int>(mine[k].size()));
+      }
+      lev.zoneBlocks.push_back(std::make_shared<PatchSmoother>(*lev.A, one, false));
+    }
   }
   mg->coarse = createDirectSolverFromValidated(directList);
   mg->coarse->setOperator(mg->levels[0].A, symmetric);
