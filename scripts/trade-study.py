@@ -235,6 +235,7 @@ def rows_of_run(scene, label, sets, summary, wall, quantities):
              "krylov_iterations": (c.get("linear_iterations") or {}).get("total", "")}
         for p in ("setup", "assemble", "solve", "estimate"):
             r["phase_" + p] = phases.get(p, 0.0)
+        r["phase_setup"] += phases.get("numbering", 0.0)  # the DOF numbering is set-up too
         r["phase_other"] = sum(phases.values()) - sum(r["phase_" + p] for p in ("setup", "assemble", "solve", "estimate"))
         for q in quantities:
             r[q] = (CONTACT_QUANTITIES.get(q) or EXACT_QUANTITIES[q])(c)

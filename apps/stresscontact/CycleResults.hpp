@@ -38,6 +38,10 @@ struct LinearSolveRecord {
   long long symbolicReuses = 0, preconditionerSetups = 0;
   int solves = 0;
   std::vector<int> iterationsPerSolve;  ///< empty with a direct solver
+  /// A direct solver's seconds in this cycle (rank 0's clock): equilibration, analyses,
+  /// factorisations and triangular solves, summed over the cycle's solves (0 for Krylov).
+  double cycleEquilibrationSeconds = 0.0, cycleSymbolicSeconds = 0.0, cycleNumericSeconds = 0.0,
+         cycleSolveSeconds = 0.0;
 };
 
 /// The contact state of a solved cycle.

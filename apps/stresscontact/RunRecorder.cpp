@@ -168,6 +168,11 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
                           {"relative_residual", ls.last.relativeResidual},
                           {"symbolic_reuses", ls.symbolicReuses},
                           {"factor_nonzeros", ls.last.factorNonzeros}};
+    if (!ls.iterative)
+      c["linear_solver"]["seconds"] = {{"equilibration", ls.cycleEquilibrationSeconds},
+                                       {"analysis", ls.cycleSymbolicSeconds},
+                                       {"factorization", ls.cycleNumericSeconds},
+                                       {"triangular_solves", ls.cycleSolveSeconds}};
     if (ls.iterative) {
       c["linear_solver"]["preconditioner_setups"] = ls.preconditionerSetups;
       c["linear_solver"]["preconditioner_seconds_last"] = ls.last.preconditionerSeconds;

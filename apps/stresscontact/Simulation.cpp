@@ -170,7 +170,7 @@ void Simulation::setupElasticity()
     curved = mesh::MeshFactory::curvedElements(settings_.mesh, *refiner_);
   }
   // The pipeline shared with the tests and benchmarks: METIS partition ("partition" phase), DOF
-  // numbering and the assembler's graph ("setup").
+  // numbering ("numbering") and the assembler's graph ("setup").
   system_ = std::make_unique<assembly::MixedElasticitySystem>(
       mesh_, settings_.discretization.degree, comm_, curved, &timers_);
   system_->setupAssembler();
@@ -221,6 +221,7 @@ void Simulation::solveElasticity()
   // The "solve" phase: the solver gets the physical block scaling D (√(2μ) on σ, 1/√(2μ) on u,
   // θ: robust in E) and, if Krylov, the block structure; the system without contact rows is
   // symmetric (tractions are eliminated symmetrically).
+  solverBefore_ = solver_->lastSolveStats();
   solution_ = system_->solve(*solver_, multigridLevels());
   if (solver_->isIterative()) linearIterations_.push_back(solver_->lastSolveStats().iterations);
   std::ostringstream os;
@@ -250,6 +251,7 @@ void Simulation::solveContact()
   solution_ = assembler_->createVector();
   {
     auto t = timers_.scope("solve");
+    solverBefore_ = solver_->lastSolveStats();
     system_->prepareSolver(*solver_, multigridLevels());
     linearIterations_.clear();
     contactProblem_->solve(*assembler_->matrix(), *assembler_->rhs(), *solver_, *solution_);
@@ -279,6 +281,11 @@ void Simulation::recordSolve()
   ls.name = solver_->name();
   ls.iterative = solver_->isIterative();
   ls.last = solver_->lastSolveStats();
+  ls.cycleEquilibrationSeconds =
+      ls.last.totalEquilibrationSeconds - solverBefore_.totalEquilibrationSeconds;
+  ls.cycleSymbolicSeconds = ls.last.totalSymbolicSeconds - solverBefore_.totalSymbolicSeconds;
+  ls.cycleNumericSeconds = ls.last.totalNumericSeconds - solverBefore_.totalNumericSeconds;
+  ls.cycleSolveSeconds = ls.last.totalSolveSeconds - solverBefore_.totalSolveSeconds;
   ls.symbolicReuses = ls.last.symbolicReuses + symbolicReusesBefore_;
   ls.preconditionerSetups = ls.last.preconditionerSetups + preconditionerSetupsBefore_;
   // One linear solve per Newton step (1 without contact).

@@ -33,6 +33,7 @@
 #include <sc/core/ProblemData.hpp>
 #include <sc/core/Timers.hpp>
 #include <sc/mesh/ResourceEstimate.hpp>
+#include <sc/solvers/SolveStatistics.hpp>
 
 #include "RunSettings.hpp"
 
@@ -267,6 +268,9 @@ private:
   std::unique_ptr<io::CheckpointFile> checkpoint_;
   long long symbolicReusesBefore_ = 0;
   long long preconditionerSetupsBefore_ = 0;
+  /// The solver's statistics when the cycle's solve began (its seconds per part are the
+  /// difference).
+  solvers::SolveStatistics solverBefore_;
 };
 
 }  // namespace sc::app

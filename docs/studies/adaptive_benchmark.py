@@ -13,6 +13,11 @@ and after each run: the machine is shared, compare ratios within a run.
 
 Usage (repository root, after building; SC_BUILD_DIR or --build, default build/):
   /usr/bin/python3 docs/studies/adaptive_benchmark.py [--case 2d|3d|all] [--ranks N]
+  /usr/bin/python3 docs/studies/adaptive_benchmark.py --case 2d|3d --scaling 1,2 [--repeat R]
+      strong scaling (docs/benchmarks.md "Parallel efficiency"): the run at each rank count,
+      alternating (1, 2, 1, 2, ...), R times each; per phase the seconds summed over the cycles
+      (each cycle's phase the slowest rank's), the fastest of the R runs, and the whole-process
+      wall time with the efficiency T_1 / (n T_n) against the first rank count.
   /usr/bin/python3 docs/studies/adaptive_benchmark.py --smoke   # a few seconds (CTest)
 The 2D run to 10^6 DOFs takes about 2 minutes on one core, the 3D run to 5*10^5 about 10.
 """
@@ -30,6 +35,13 @@ PHASES = ["solve", "reconstruct", "estimate", "mark", "refine", "transfer", "out
 # matrix graph) + assemble, and "other": mesh, partition, contact setup (constraint points),
 # errors, checkpoint.
 LOOP = ["reconstruct", "estimate", "mark", "refine", "transfer"]
+SETUP = ["numbering", "setup", "assemble"]
+# The strong-scaling table's rows: every phase of docs/output.md, the solve split into the
+# direct solver's parts (linear_solver.seconds) and the rest of the Newton loop.
+SCALING_ROWS = ["mesh", "partition", "numbering", "setup", "assemble", "contact setup", "transfer",
+                "solve", "  equilibration", "  analysis", "  factorization", "  triangular solves",
+                "  rest of the Newton loop", "reconstruct", "estimate", "errors", "mark", "refine",
+                "output", "checkpoint"]
 
 
 def cases(args):
@@ -87,9 +99,9 @@ def table(summary):
     for c in summary["cycles"]:
         t = dict(c.get("timings") or {})
         mem = c.get("memory") or {}
-        t["setup + assemble"] = t.get("setup", 0.0) + t.get("assemble", 0.0)
+        t["setup + assemble"] = sum(t.get(k, 0.0) for k in SETUP)
         t["other"] = sum(v for k, v in (c.get("timings") or {}).items()
-                         if k not in PHASES and k not in ("setup", "assemble"))
+                         if k not in PHASES and k not in SETUP)
         for k in keys:
             totals[k] += t.get(k, 0.0)
         loop = sum(t.get(p, 0.0) for p in LOOP)
@@ -110,6 +122,74 @@ def table(summary):
     return "\n".join(lines)
 
 
+def phase_totals(summary):
+    """Seconds per phase summed over the cycles (SCALING_ROWS), with the solver's parts."""
+    totals = {k: 0.0 for k in SCALING_ROWS}
+    for c in summary["cycles"]:
+        for k, v in (c.get("timings") or {}).items():
+            totals[k] = totals.get(k, 0.0) + v
+        parts = ((c.get("linear_solver") or {}).get("seconds")) or {}
+        keys = ("equilibration", "analysis", "factorization", "triangular_solves")
+        for key in keys:
+            totals["  " + key.replace("_", " ")] += parts.get(key, 0.0)
+        if "solve" in (c.get("timings") or {}):
+            totals["  rest of the Newton loop"] += c["timings"]["solve"] - sum(
+                parts.get(k, 0.0) for k in keys)
+    return totals
+
+
+def scaling(args, app):
+    """Strong scaling: alternate the rank counts, keep the fastest run of each, tabulate."""
+    counts = [int(n) for n in args.scaling.split(",")]
+    for name, (deck, sets) in cases(args).items():
+        best = {}
+        print("## %s: strong scaling over %s rank(s), %d run(s) each, alternating" %
+              (name, args.scaling, args.repeat))
+        for r in range(args.repeat):
+            for n in counts:
+                summary, seconds, before, after, cmd = run(app, name, deck, sets, n, args.output)
+                print("run %d, %d rank(s): %.1f s wall, %s DOFs in %d cycles; uptime before: %s; "
+                      "after: %s" % (r + 1, n, seconds,
+                                     "{:,}".format(summary["cycles"][-1]["dofs"]["total"]),
+                                     len(summary["cycles"]), before, after), flush=True)
+                if n not in best or seconds < best[n][1]:
+                    best[n] = (summary, seconds, cmd)
+                if not args.keep:
+                    shutil.rmtree(os.path.join(args.output, name + "_np%d" % n), ignore_errors=True)
+        for n in counts:
+            print("command (%d): %s" % (n, " ".join(("'%s'" % c) if " " in c else c
+                                                    for c in best[n][2])))
+        dofs = {n: [c["dofs"]["total"] for c in best[n][0]["cycles"]] for n in counts}
+        if any(dofs[n] != dofs[counts[0]] for n in counts):
+            print("WARNING: the meshes differ between rank counts")
+        totals = {n: phase_totals(best[n][0]) for n in counts}
+        base = counts[0]
+        head = ["phase"] + ["%d rank(s) s" % n for n in counts] + [
+            "speed-up %d→%d" % (base, n) for n in counts[1:]]
+        print()
+        print("| " + " | ".join(head) + " |")
+        print("|" + "---|" * len(head))
+        for row in SCALING_ROWS + ["sum of phases", "whole process (wall)"]:
+            if row == "sum of phases":
+                vals = {n: sum(v for k, v in totals[n].items() if not k.startswith("  "))
+                        for n in counts}
+            elif row == "whole process (wall)":
+                vals = {n: best[n][1] for n in counts}
+            else:
+                vals = {n: totals[n].get(row, 0.0) for n in counts}
+            if all(v == 0.0 for v in vals.values()):
+                continue
+            cells = [row.strip() if not row.startswith("  ") else "… " + row.strip()]
+            cells += ["%.3g" % vals[n] for n in counts]
+            cells += [("%.2f" % (vals[base] / vals[n])) if vals[n] > 0 else "–" for n in counts[1:]]
+            print("| " + " | ".join(cells) + " |")
+        print()
+        for n in counts[1:]:
+            print("whole-process efficiency %d→%d ranks: %.0f %%" %
+                  (base, n, 100.0 * base * best[base][1] / (n * best[n][1])))
+        print(flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default=os.environ.get("SC_BUILD_DIR", os.path.join(ROOT, "build")))
@@ -120,11 +200,16 @@ def main():
     ap.add_argument("--output", default="/tmp/sc_adaptive_benchmark")
     ap.add_argument("--smoke", action="store_true", help="2 cycles on a coarse 2D mesh (seconds)")
     ap.add_argument("--keep", action="store_true", help="keep the runs' output directories")
+    ap.add_argument("--scaling", help="strong scaling over these rank counts, e.g. 1,2")
+    ap.add_argument("--repeat", type=int, default=1, help="--scaling: runs per rank count")
     args = ap.parse_args()
 
     app = os.path.join(args.build, "apps", "stresscontact", "stresscontact")
     if not os.access(app, os.X_OK):
         sys.exit("adaptive_benchmark: no application at %s (build first, or --build DIR)" % app)
+    if args.scaling:
+        scaling(args, app)
+        return
     for name, (deck, sets) in cases(args).items():
         summary, seconds, before, after, cmd = run(app, name, deck, sets, args.ranks, args.output)
         print("## %s, %d rank(s): %d cycles to %s DOFs, %.1f s wall" %

@@ -59,7 +59,7 @@ MixedElasticitySystem::~MixedElasticitySystem() = default;
 void MixedElasticitySystem::setupSpace(Teuchos::RCP<const mesh::SimplexMesh> mesh, int degree,
                                        Teuchos::RCP<const mesh::CurvedElements> curved)
 {
-  OptionalPhase t(timers_, "setup");
+  OptionalPhase t(timers_, "numbering");
   space_ = Teuchos::rcp(new disc::MixedElasticitySpace(std::move(mesh), degree, elementOwner_,
                                                        comm_->getRank(), std::move(curved)));
 }

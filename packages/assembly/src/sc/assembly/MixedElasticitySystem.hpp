@@ -16,8 +16,9 @@
 //   contact.solve(*system.assembler().matrix(), *system.assembler().rhs(), *solver, *x);
 //
 // Timing: with a core::PhaseTimers the steps are timed as the application's phases
-// "partition" (METIS), "setup" (DOF numbering and the assembler's graph), "assemble" and
-// "solve"; without one, time the calls (the constructor, setupAssembler, assemble, solve).
+// "partition" (METIS), "numbering" (the spaces and the DOF numbering), "setup" (the assembler's
+// maps and graph), "assemble" and "solve"; without one, time the calls (the constructor,
+// setupAssembler, assemble, solve).
 #include <memory>
 #include <vector>
 

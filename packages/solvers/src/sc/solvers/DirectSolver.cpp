@@ -108,6 +108,7 @@ Teuchos::RCP<const CrsMatrix> DirectSolver::operatorToFactor()
     else
       scaledA_ = equilibration_->scaledCopy(*A_);
     stats_.equilibrationSeconds = timer.stop();
+    stats_.totalEquilibrationSeconds += stats_.equilibrationSeconds;
     stats_.equilibrationIterations = equilibration_->iterations();
     scaledValid_ = true;
   }
@@ -121,6 +122,7 @@ void DirectSolver::symbolicFactorization()
   timer.start(true);
   doSymbolicFactorization(op);
   stats_.symbolicSeconds = timer.stop();
+  stats_.totalSymbolicSeconds += stats_.symbolicSeconds;
   ++stats_.symbolicFactorizations;
   symbolicValid_ = true;
   symbolicUsed_ = false;
@@ -138,6 +140,7 @@ void DirectSolver::numericFactorization()
   timer.start(true);
   doNumericFactorization(op);
   stats_.numericSeconds = timer.stop();
+  stats_.totalNumericSeconds += stats_.numericSeconds;
   ++stats_.numericFactorizations;
   symbolicUsed_ = true;
   numericValid_ = true;
@@ -159,6 +162,7 @@ void DirectSolver::solveOperator(const MultiVector& b, MultiVector& x)
     doSolve(b, x);
   }
   stats_.solveSeconds = timer.stop();
+  stats_.totalSolveSeconds += stats_.solveSeconds;
   ++stats_.solves;
 }
 

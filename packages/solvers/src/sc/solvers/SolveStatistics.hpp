@@ -10,6 +10,11 @@ struct SolveStatistics {
   double symbolicSeconds = 0.0;
   double numericSeconds = 0.0;
   double solveSeconds = 0.0;
+  /// Sums of the above since the solver was built (each cycle's share is the difference).
+  double totalEquilibrationSeconds = 0.0;
+  double totalSymbolicSeconds = 0.0;
+  double totalNumericSeconds = 0.0;
+  double totalSolveSeconds = 0.0;
 
   // Counters since the operator was first set.
   int symbolicFactorizations = 0;  ///< analyses (orderings) done
