@@ -46,6 +46,7 @@ const std::vector<std::pair<std::string, Builder>>& registry()
              std::find(names.begin(), names.end(), mp.get<std::string>("Ordering")) -
              names.begin());
          o.verbose = pl.get<bool>("Verbose");
+         o.lowRankTolerance = mp.get<double>("Low-rank tolerance");
          return Teuchos::rcp(new MumpsSolver(o));
        }},
       {"Iterative",
@@ -177,6 +178,14 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                   "(default) and QAMD gave 5-10x smaller factors than METIS on saddle-point "
                   "systems (docs/solvers.md); METIS is better for definite 2D/3D Laplacians. Auto "
                   "lets MUMPS choose, which may depend on the number of ranks.");
+    declareReal(mp, "Low-rank tolerance", 0.0,
+                "CNTL(7): block low-rank (BLR) factorisation with this dropping parameter, "
+                "relative to the equilibrated matrix (ICNTL(35) = 2: BLR in the factorisation "
+                "and the solve); 0: the exact (full-rank) factorisation. The factors become an "
+                "approximation: the solve's relative residual grows with the tolerance and must "
+                "stay below 'Maximum relative residual' (docs/solvers.md \"Block low-rank\", "
+                "measured).",
+                0.0, false, 1e-2, false);
     return pl;
   }();
   return valid;

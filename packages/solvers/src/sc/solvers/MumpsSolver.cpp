@@ -19,6 +19,7 @@
 
 // MUMPS documents its controls 1-based.
 #define ICNTL(I) icntl[(I)-1]
+#define CNTL(I) cntl[(I)-1]
 #define INFOG(I) infog[(I)-1]
 
 namespace sc::solvers {
@@ -194,6 +195,10 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
   // Sequential analysis on the gathered graph: the ordering, hence the factors, do not depend on
   // the number of ranks (results agree across rank counts, docs/theory.md §"Parallel model").
   id.ICNTL(28) = 1;
+  // Block low-rank (MUMPS 5.5): chosen at the analysis, which plans the BLR clustering of the
+  // fronts; CNTL(7) is the accuracy of the compressed blocks (docs/solvers.md "Block low-rank").
+  id.ICNTL(35) = options_.lowRankTolerance > 0.0 ? 2 : 0;
+  id.CNTL(7) = options_.lowRankTolerance;
 
   // --- local entries with 1-based global indices
   const auto lclA = A->getLocalMatrixHost();

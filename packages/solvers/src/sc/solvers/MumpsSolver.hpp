@@ -20,6 +20,9 @@ struct MumpsOptions {
   int workspaceRetries{};         ///< on INFOG(1) = -8/-9: retry with ICNTL(14) doubled
   int ordering{};  ///< ICNTL(7): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD, 7 auto
   bool verbose{};  ///< MUMPS diagnostics on stdout (ICNTL(1..4))
+  /// CNTL(7), the block low-rank dropping parameter; > 0 turns BLR on in the factorisation and
+  /// the solve (ICNTL(35) = 2), 0 keeps the full-rank factorisation (ICNTL(35) = 0).
+  double lowRankTolerance{};
 };
 
 class MumpsSolver : public DirectSolver {
