@@ -73,11 +73,18 @@ std::optional<double> fittedEnd(const std::vector<double>& s, const std::vector<
   const double innermost = distinct[distinct.size() - used];
   const double span = outermost - innermost;
   if (!(span > 0.0)) return std::nullopt;
+  // The pressures relative to their largest value here: p² of a stiff material (E up to 1e100,
+  // 'Material/Young modulus') would overflow in the discriminant below; the zero is unchanged.
+  double pScale = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (in[i] && s[i] >= innermost - same) pScale = std::max(pScale, std::abs(p[i]));
+  if (!(pScale > 0.0) || !std::isfinite(pScale)) return std::nullopt;
   // Normal equations in x = (s − outermost)/span (conditioning), the unknowns c₀, c₁, c₂.
   double m[3][4] = {};
   for (std::size_t i = 0; i < s.size(); ++i)
     if (in[i] && s[i] >= innermost - same) {
-      const double x = (s[i] - outermost) / span, y = p[i] * p[i];
+      const double q = p[i] / pScale;
+      const double x = (s[i] - outermost) / span, y = q * q;
       const double row[3] = {1.0, x, x * x};
       for (int a = 0; a < 3; ++a) {
         for (int b = 0; b < 3; ++b)
