@@ -230,7 +230,7 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     pressure.push_back(all[i + 2]);
   }
   out.zoneSize = zoneSize(s, active, dim == 2, &out.zoneResolution);
-  if (dim == 2) {
+  if (dim == 2 && !pressures.empty()) {
     std::vector<double> mirrored(s.size());
     for (std::size_t i = 0; i < s.size(); ++i)
       mirrored[i] = -s[i];
