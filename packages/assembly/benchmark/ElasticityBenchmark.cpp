@@ -10,8 +10,8 @@
 // 0.5 in 3D), then uniform bisection until the DOF count exceeds --max-dofs. One uniform cycle
 // multiplies the DOFs by ~4 in 2D and ~8 in 3D; --mesh-size fills the gaps (DOFs ~ h^-d).
 //
-// setup = partition + DOF numbering (number_s, on the whole replicated mesh) + the exact FECrsGraph
-// of this rank's elements. Every time is the maximum over ranks (phases start after a barrier);
+// setup = partition + DOF numbering (number_s, on the whole replicated mesh) + the exact graph of
+// this rank's owned rows. Every time is the maximum over ranks (phases start after a barrier);
 // "per rank" rates are the global count / that time / number of ranks; peak memory is the
 // resident-set high-water mark (getrusage) since the start of the program, maximum and sum over
 // ranks. Iterative: Belos MINRES with the block-diagonal preconditioner (docs/theory.md

@@ -4,10 +4,11 @@
 #include <cmath>
 
 #include <Teuchos_Time.hpp>
-#include <Tpetra_FECrsGraph.hpp>
-#include <Tpetra_FECrsMatrix.hpp>
-#include <Tpetra_FEMultiVector.hpp>
+#include <Kokkos_Core.hpp>
+#include <Tpetra_CrsGraph.hpp>
+#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
 
 #include <sc/assembly/LoadsAndSupports.hpp>
 #include <sc/core/Error.hpp>
@@ -18,10 +19,9 @@
 namespace sc::assembly {
 namespace {
 
-using FEGraph = Tpetra::FECrsGraph<>;
-using FEMatrix = Tpetra::FECrsMatrix<>;
-using FEVector = Tpetra::FEMultiVector<>;
+using Graph = Tpetra::CrsGraph<>;
 using GO = Tpetra::Map<>::global_ordinal_type;
+using LO = Tpetra::Map<>::local_ordinal_type;
 
 // Solve the small dense system M c = r (Gaussian elimination with partial pivoting).
 void solveDense(std::vector<double> M, std::vector<double>& r, int n)
@@ -134,13 +134,36 @@ const std::vector<AsymmetryTerm>& asymmetryTerms(int dim)
   return dim == 2 ? terms2D : terms3D;
 }
 
+// The matrix holds this rank's owned rows only, complete: each rank assembles, besides its own
+// elements, the elements of other ranks that touch its rows (the mesh is replicated), and keeps
+// the rows it owns. The graph is built once per space from local CSR arrays with a precomputed
+// column map (no global index insertion, no global-to-local conversion, no export of shared
+// rows) and reused by every assembly on the space (docs/theory.md §"Parallel model").
 struct MixedElasticityAssembler::Impl {
-  Teuchos::RCP<const Map> owned, overlap;
-  Teuchos::RCP<FEGraph> graph;
-  Teuchos::RCP<FEMatrix> matrix;
-  Teuchos::RCP<FEVector> rhs;
+  Teuchos::RCP<const Map> owned, overlap, columns;
+  Teuchos::RCP<const Graph> graph;
+  Teuchos::RCP<CrsMatrix> matrix;
+  Teuchos::RCP<MultiVector> rhs;
   Teuchos::RCP<const Tpetra::Import<>> importer;  // owned -> overlap
-  Teuchos::RCP<FEMatrix> fieldMass;               // cached by fieldMassMatrix()
+  Teuchos::RCP<CrsMatrix> fieldMass;              // cached by fieldMassMatrix()
+  // The elements that touch an owned row (ascending), whether this rank owns each, and their
+  // DOFs' local column indices (localSize() per element). An owned DOF's column index is its row
+  // index: the column map lists the owned DOFs first, in the owned map's order.
+  std::vector<int> elements;
+  std::vector<char> ownsElement;
+  std::vector<LO> elementColumns;
+  LO numOwned = 0;
+
+  // Sum the element matrix K (L×L, row-major) and vector F (optional) into the owned rows.
+  void sumInto(std::size_t k, int L, const double* K, const double* F) const
+  {
+    const LO* cols = &elementColumns[k * static_cast<std::size_t>(L)];
+    for (int i = 0; i < L; ++i) {
+      if (cols[i] >= numOwned) continue;
+      matrix->sumIntoLocalValues(cols[i], L, &K[static_cast<std::size_t>(i) * L], cols, false);
+      if (F) rhs->sumIntoLocalValue(cols[i], 0, F[i]);
+    }
+  }
 };
 
 MixedElasticityAssembler::MixedElasticityAssembler(
@@ -157,65 +180,141 @@ void MixedElasticityAssembler::buildGraph()
 {
   const double t0 = Teuchos::Time::wallTime();
   const auto& S = *space_;
+  Impl& I = *impl_;
   const GO n = S.numGlobalDofs();
-  const auto& ownedDofs = S.ownedDofs();
-  // FECrsGraph wants the overlap map to list the owned GIDs first, in the owned map's order.
-  std::vector<GO> overlapGids(ownedDofs.begin(), ownedDofs.end());
-  for (long long g : S.overlapDofs())
-    if (S.dofOwner(g) != S.rank()) overlapGids.push_back(g);
-  impl_->owned = Teuchos::rcp(
-      new Map(n, Teuchos::ArrayView<const GO>(ownedDofs.data(), ownedDofs.size()), 0, comm_));
-  impl_->overlap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                        Teuchos::ArrayView<const GO>(overlapGids), 0, comm_));
-  impl_->importer = Teuchos::rcp(new Tpetra::Import<>(impl_->owned, impl_->overlap));
-
-  // Exact row lengths of the overlap rows: the union of the DOFs of the elements around a row.
+  const int me = S.rank();
   const int L = S.localSize();
-  const auto& elements = S.ownedElements();
-  const std::size_t nRows = overlapGids.size();
-  std::vector<int> rowPtr(nRows + 1, 0);
-  for (int e : elements) {
+  const auto& ownedDofs = S.ownedDofs();
+  const auto nOwned = static_cast<LO>(ownedDofs.size());
+  I.numOwned = nOwned;
+
+  // The overlap map (owned DOFs first, then the other DOFs of this rank's elements) and its
+  // importer; the owners of the remote DOFs are known, so the importer needs no directory.
+  std::vector<GO> overlapGids(ownedDofs.begin(), ownedDofs.end());
+  Teuchos::Array<int> overlapOwners;
+  for (long long g : S.overlapDofs())
+    if (S.dofOwner(g) != me) {
+      overlapGids.push_back(g);
+      overlapOwners.push_back(S.dofOwner(g));
+    }
+  I.owned = Teuchos::rcp(
+      new Map(n, Teuchos::ArrayView<const GO>(ownedDofs.data(), ownedDofs.size()), 0, comm_));
+  I.overlap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                   Teuchos::ArrayView<const GO>(overlapGids), 0, comm_));
+  I.importer = Teuchos::rcp(new Tpetra::Import<>(I.owned, I.overlap, overlapOwners));
+
+  // Column indices: the owned DOFs in the owned map's order, then the other DOFs of the elements
+  // that touch owned rows, by owning rank and then global index (the order Tpetra's own column
+  // map construction gives).
+  std::vector<LO> column(static_cast<std::size_t>(n), -1);
+  for (LO i = 0; i < nOwned; ++i)
+    column[static_cast<std::size_t>(ownedDofs[i])] = i;
+  const int nElements = S.mesh().numElements();
+  std::vector<char> owns(static_cast<std::size_t>(nElements), 0);
+  for (int e : S.ownedElements())
+    owns[e] = 1;
+  I.elements.clear();
+  I.ownsElement.clear();
+  std::vector<std::pair<int, GO>> remote;  // (owner, gid)
+  for (int e = 0; e < nElements; ++e) {
     const long long* g = S.elementDofs(e);
+    bool touches = owns[e] != 0;
+    for (int i = 0; i < L && !touches; ++i) {
+      const LO c = column[static_cast<std::size_t>(g[i])];
+      touches = c >= 0 && c < nOwned;
+    }
+    if (!touches) continue;
+    I.elements.push_back(e);
+    I.ownsElement.push_back(owns[e]);
     for (int i = 0; i < L; ++i)
-      ++rowPtr[impl_->overlap->getLocalElement(g[i]) + 1];
+      if (column[static_cast<std::size_t>(g[i])] == -1) {
+        column[static_cast<std::size_t>(g[i])] = -2;
+        remote.emplace_back(S.dofOwner(g[i]), g[i]);
+      }
   }
-  for (std::size_t r = 0; r < nRows; ++r)
-    rowPtr[r + 1] += rowPtr[r];
-  std::vector<int> rowElems(rowPtr[nRows]);
+  std::sort(remote.begin(), remote.end());
+  std::vector<GO> columnGids(ownedDofs.begin(), ownedDofs.end());
+  Teuchos::Array<int> columnOwners;
+  columnGids.reserve(ownedDofs.size() + remote.size());
+  columnOwners.reserve(remote.size());
+  for (std::size_t r = 0; r < remote.size(); ++r) {
+    column[static_cast<std::size_t>(remote[r].second)] = nOwned + static_cast<LO>(r);
+    columnGids.push_back(remote[r].second);
+    columnOwners.push_back(remote[r].first);
+  }
+  const auto nColumns = static_cast<LO>(columnGids.size());
+  I.columns = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                   Teuchos::ArrayView<const GO>(columnGids), 0, comm_));
+  const std::size_t nAssembled = I.elements.size();
+  I.elementColumns.resize(nAssembled * L);
+  for (std::size_t k = 0; k < nAssembled; ++k) {
+    const long long* g = S.elementDofs(I.elements[k]);
+    for (int i = 0; i < L; ++i)
+      I.elementColumns[k * L + i] = column[static_cast<std::size_t>(g[i])];
+  }
+  std::vector<LO>().swap(column);
+
+  // The elements around each owned row, then each row's columns: the union of their DOFs
+  // (counted, then filled, with a last-row marker per column), sorted.
+  std::vector<LO> rowStart(static_cast<std::size_t>(nOwned) + 1, 0);
+  for (LO c : I.elementColumns)
+    if (c < nOwned) ++rowStart[c + 1];
+  for (LO r = 0; r < nOwned; ++r)
+    rowStart[r + 1] += rowStart[r];
+  std::vector<LO> rowElements(static_cast<std::size_t>(rowStart[nOwned]));
   {
-    std::vector<int> fill(rowPtr.begin(), rowPtr.end() - 1);
-    for (int e : elements) {
-      const long long* g = S.elementDofs(e);
+    std::vector<LO> fill(rowStart.begin(), rowStart.end() - 1);
+    for (std::size_t k = 0; k < nAssembled; ++k)
+      for (int i = 0; i < L; ++i) {
+        const LO c = I.elementColumns[k * L + i];
+        if (c < nOwned) rowElements[fill[c]++] = static_cast<LO>(k);
+      }
+  }
+  using LocalGraph = Graph::local_graph_device_type;
+  typename LocalGraph::row_map_type::non_const_type rowPointers(
+      Kokkos::view_alloc("row pointers", Kokkos::WithoutInitializing),
+      static_cast<std::size_t>(nOwned) + 1);
+  auto rowPointersHost = Kokkos::create_mirror_view(rowPointers);
+  std::vector<LO> marker(static_cast<std::size_t>(nColumns), -1);
+  rowPointersHost(0) = 0;
+  for (LO r = 0; r < nOwned; ++r) {
+    std::size_t count = 0;
+    for (LO k = rowStart[r]; k < rowStart[r + 1]; ++k) {
+      const LO* cols = &I.elementColumns[static_cast<std::size_t>(rowElements[k]) * L];
       for (int i = 0; i < L; ++i)
-        rowElems[fill[impl_->overlap->getLocalElement(g[i])]++] = e;
+        if (marker[cols[i]] != r) {
+          marker[cols[i]] = r;
+          ++count;
+        }
     }
+    rowPointersHost(r + 1) = rowPointersHost(r) + count;
   }
-  Kokkos::DualView<std::size_t*, Map::device_type> counts("row lengths", nRows);
-  std::vector<std::vector<GO>> columns(nRows);
-  auto countsHost = counts.view_host();
-  for (std::size_t r = 0; r < nRows; ++r) {
-    auto& cols = columns[r];
-    for (int k = rowPtr[r]; k < rowPtr[r + 1]; ++k) {
-      const long long* g = S.elementDofs(rowElems[k]);
-      cols.insert(cols.end(), g, g + L);
+  typename LocalGraph::entries_type::non_const_type entries(
+      Kokkos::view_alloc("column indices", Kokkos::WithoutInitializing), rowPointersHost(nOwned));
+  auto entriesHost = Kokkos::create_mirror_view(entries);
+  std::fill(marker.begin(), marker.end(), -1);
+  for (LO r = 0; r < nOwned; ++r) {
+    std::size_t pos = rowPointersHost(r);
+    for (LO k = rowStart[r]; k < rowStart[r + 1]; ++k) {
+      const LO* cols = &I.elementColumns[static_cast<std::size_t>(rowElements[k]) * L];
+      for (int i = 0; i < L; ++i)
+        if (marker[cols[i]] != r) {
+          marker[cols[i]] = r;
+          entriesHost(pos++) = cols[i];
+        }
     }
-    std::sort(cols.begin(), cols.end());
-    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
-    countsHost(r) = cols.size();
+    std::sort(&entriesHost(rowPointersHost(r)), &entriesHost(0) + pos);
   }
-  counts.modify_host();
-  counts.sync_device();
-  Kokkos::DualView<const std::size_t*, Map::device_type> constCounts = counts;
-  impl_->graph = Teuchos::rcp(new FEGraph(impl_->owned, impl_->overlap, constCounts));
-  impl_->graph->beginAssembly();
-  for (std::size_t r = 0; r < nRows; ++r)
-    impl_->graph->insertGlobalIndices(overlapGids[r], Teuchos::ArrayView<const GO>(columns[r]));
-  impl_->graph->endAssembly();
-  impl_->matrix = Teuchos::rcp(new FEMatrix(impl_->graph));
-  impl_->rhs = Teuchos::rcp(new FEVector(impl_->owned, impl_->graph->getImporter(), 1));
+  Kokkos::deep_copy(rowPointers, rowPointersHost);
+  Kokkos::deep_copy(entries, entriesHost);
+  auto columnImporter = Teuchos::rcp(new Tpetra::Import<>(I.owned, I.columns, columnOwners));
+  I.graph = Teuchos::rcp(new Graph(LocalGraph(entries, rowPointers), I.owned, I.columns, I.owned,
+                                   I.owned, columnImporter, Teuchos::null));
+  I.matrix = Teuchos::rcp(new CrsMatrix(I.graph));
+  I.rhs = Teuchos::rcp(new MultiVector(I.owned, 1));
   stats_.graphSeconds = Teuchos::Time::wallTime() - t0;
-  stats_.ownedElements = static_cast<long long>(elements.size());
-  stats_.nonzeros = static_cast<long long>(impl_->graph->getGlobalNumEntries());
+  stats_.ownedElements = static_cast<long long>(S.ownedElements().size());
+  stats_.nonzeros = static_cast<long long>(I.graph->getGlobalNumEntries());
 }
 
 void MixedElasticityAssembler::assemble(const ElasticityData& data)
@@ -243,19 +342,19 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
   std::vector<double> K(static_cast<std::size_t>(L) * L), F(L);
   std::vector<double> G(static_cast<std::size_t>(nRT) * nRT);
   std::vector<double> P(static_cast<std::size_t>(d) * d * nRT * nRT);
-  std::vector<GO> gids(L);
   std::vector<char> constrained(L);
   std::vector<double> constrainedValue(L);
   long long nConstrained = 0;
 
   auto& A = *impl_->matrix;
   auto& b = *impl_->rhs;
-  A.beginAssembly();
-  b.beginAssembly();
+  if (A.isFillComplete()) A.resumeFill();
   A.setAllToScalar(0.0);
   b.putScalar(0.0);
 
-  for (int e : S.ownedElements()) {
+  const auto& elements = impl_->elements;
+  for (std::size_t ek = 0; ek < elements.size(); ++ek) {
+    const int e = elements[ek];
     std::fill(K.begin(), K.end(), 0.0);
     std::fill(F.begin(), F.end(), 0.0);
     std::fill(G.begin(), G.end(), 0.0);
@@ -445,7 +544,7 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
     diag = nd ? diag / nd : inv2mu;
     for (int c = 0; c < L; ++c) {
       if (!constrained[c]) continue;
-      ++nConstrained;
+      if (impl_->ownsElement[ek]) ++nConstrained;
       const double g = constrainedValue[c];
       for (int i = 0; i < L; ++i) {
         if (i != c) F[i] -= KK(i, c) * g;
@@ -456,17 +555,9 @@ void MixedElasticityAssembler::assemble(const ElasticityData& data)
       F[c] = diag * g;
     }
     transformFrames(K, F, L, d, frames, true);
-    const long long* g = S.elementDofs(e);
-    std::copy(g, g + L, gids.begin());
-    for (int i = 0; i < L; ++i) {
-      A.sumIntoGlobalValues(
-          gids[i], Teuchos::ArrayView<const GO>(gids),
-          Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
-      b.sumIntoGlobalValue(gids[i], 0, F[i]);
-    }
+    impl_->sumInto(ek, L, K.data(), F.data());
   }
-  A.endAssembly();
-  b.endAssembly();
+  A.fillComplete(impl_->owned, impl_->owned);
   impl_->fieldMass = Teuchos::null;
   stats_.constrainedDofs = nConstrained;
   stats_.assemblySeconds = Teuchos::Time::wallTime() - t0;
@@ -480,12 +571,12 @@ Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::fieldMassMatrix() const
   const int nDP = S.displacementBasisSize(), nCP = S.rotationBasisSize();
   const int r = S.numRotationComponents();
   disc::ElementValues ev(S, 2 * k + 2);
-  auto M = Teuchos::rcp(new FEMatrix(impl_->graph));
+  auto M = Teuchos::rcp(new CrsMatrix(impl_->graph));
   std::vector<double> K(static_cast<std::size_t>(L) * L);
-  std::vector<GO> gids(L);
-  M->beginAssembly();
   M->setAllToScalar(0.0);
-  for (int e : S.ownedElements()) {
+  const auto& elements = impl_->elements;
+  for (std::size_t ek = 0; ek < elements.size(); ++ek) {
+    const int e = elements[ek];
     std::fill(K.begin(), K.end(), 0.0);
     ev.reinit(e);
     for (int q = 0; q < ev.numPoints(); ++q) {
@@ -505,14 +596,12 @@ Teuchos::RCP<const CrsMatrix> MixedElasticityAssembler::fieldMassMatrix() const
                 v;
         }
     }
-    const long long* g = S.elementDofs(e);
-    std::copy(g, g + L, gids.begin());
+    const LO* cols = &impl_->elementColumns[ek * static_cast<std::size_t>(L)];
     for (int i = 0; i < L; ++i)
-      M->sumIntoGlobalValues(
-          gids[i], Teuchos::ArrayView<const GO>(gids),
-          Teuchos::ArrayView<const double>(&K[static_cast<std::size_t>(i) * L], L));
+      if (cols[i] < impl_->numOwned)
+        M->sumIntoLocalValues(cols[i], L, &K[static_cast<std::size_t>(i) * L], cols, false);
   }
-  M->endAssembly();
+  M->fillComplete(impl_->owned, impl_->owned);
   impl_->fieldMass = M;
   return M;
 }

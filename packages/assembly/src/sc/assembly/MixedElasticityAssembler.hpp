@@ -5,14 +5,14 @@
 //   [ B1  0    0   ] [u] = [  −(f, v)   ]       (B1 σ, v) = (div σ, v)
 //   [ B2  0    0   ] [θ]   [     0      ]       (B2 σ, η) = (as σ, η)
 //
-// Each rank assembles its own elements into a Tpetra::FECrsMatrix (owned rows plus the shared
-// rows of its elements, summed across ranks at endAssembly). The traction condition σn = t on
-// Γ_N (t = −p n for a pressure, and σn = 0 on free boundaries) is essential: the face DOFs of
-// each row are set to the L²(F) projection of t onto the face's normal traces, and eliminated
-// symmetrically inside the element matrix (a boundary face belongs to one element, so this is
-// exact), which keeps the system symmetric. A Symmetry face in x_i = const fixes the rows j ≠ i
-// to zero the same way (zero tangential traction) and leaves row i free with u_i = 0 as its
-// natural (zero) data. λ is never formed: ν = 0.5 is fine.
+// Each rank assembles its owned rows, complete, into a Tpetra::CrsMatrix: its own elements and
+// the other ranks' elements that touch its rows (docs/theory.md §"Parallel model"). The traction
+// condition σn = t on Γ_N (t = −p n for a pressure, and σn = 0 on free boundaries) is essential:
+// the face DOFs of each row are set to the L²(F) projection of t onto the face's normal traces, and
+// eliminated symmetrically inside the element matrix (a boundary face belongs to one element, so
+// this is exact), which keeps the system symmetric. A Symmetry face in x_i = const fixes the
+// rows j ≠ i to zero the same way (zero tangential traction) and leaves row i free with u_i = 0
+// as its natural (zero) data. λ is never formed: ν = 0.5 is fine.
 #include <memory>
 #include <string>
 #include <vector>

@@ -56,7 +56,7 @@ public:
   MixedElasticitySystem(const MixedElasticitySystem&) = delete;
   MixedElasticitySystem& operator=(const MixedElasticitySystem&) = delete;
 
-  /// Build the assembler (maps, importer, the FECrsGraph of this rank's elements). assemble()
+  /// Build the assembler (maps, importer, the graph of this rank's owned rows). assemble()
   /// does it when it has not been done; call it first to time the graph on its own or to look
   /// at the DOF count before paying for it.
   void setupAssembler();
