@@ -173,6 +173,12 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
                                        {"analysis", ls.cycleSymbolicSeconds},
                                        {"factorization", ls.cycleNumericSeconds},
                                        {"triangular_solves", ls.cycleSolveSeconds}};
+    if (ls.last.mumpsMemoryMaxMB >= 0.0)
+      c["linear_solver"]["mumps_memory_mb"] = {
+          {"estimated_max", ls.last.mumpsEstimatedMemoryMaxMB},
+          {"estimated_sum", ls.last.mumpsEstimatedMemoryTotalMB},
+          {"used_max", ls.last.mumpsMemoryMaxMB},
+          {"used_sum", ls.last.mumpsMemoryTotalMB}};
     if (ls.iterative) {
       c["linear_solver"]["preconditioner_setups"] = ls.preconditionerSetups;
       c["linear_solver"]["preconditioner_seconds_last"] = ls.last.preconditionerSeconds;

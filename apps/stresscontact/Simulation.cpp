@@ -96,6 +96,7 @@ void Simulation::setupMesh()
   limit_ = mesh::makeResourceLimit(settings_.mesh.memoryLimitGB, settings_.problem.dimension,
                                    settings_.discretization.degree, comm_->getSize(),
                                    settings_.adaptivity.maxDofs, available, source, baseline);
+  limit_.contact = boundaryConditions_.hasContact();  // 3D contact: LU factors, N^(4/3)
   // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
   refiner_ = mesh::MeshFactory::build(settings_.mesh, settings_.problem.dimension, *comm_,
                                       /*splitBoundarySimplices=*/false, limit_);
@@ -444,7 +445,8 @@ adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marki
                           : uniform;
   f.dofs = static_cast<double>(space_->numGlobalDofs()) * next / n;
   const auto data = [&](double dofs, double elements) {
-    return dofs * mesh::bytesPerDof(d) + limit_.ranks * elements * mesh::kMeshBytesPerElement;
+    return mesh::dataBytes(dofs, d, limit_.contact) +
+           limit_.ranks * elements * mesh::kMeshBytesPerElement;
   };
   f.bytes = data(f.dofs, next) + limit_.baselineBytes;
   // An explicit limit counts all the run's memory: the peak so far (all ranks) plus the data's

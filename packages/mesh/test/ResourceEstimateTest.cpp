@@ -147,6 +147,51 @@ TEUCHOS_UNIT_TEST(MeshResources, AvailableMemoryAndTheLimitKey)
   TEST_ASSERT(contains(set.describe(1e6), "'Adaptivity/Max DOFs' is 1000"));
 }
 
+// 3D contact memory (docs/mesh.md "Resource limits"). Stored reference: the peak resident memory
+// (/usr/bin/time -v, MB = 2^20 bytes) of one-cycle runs of input/hertz3d.xml (Coulomb) and
+// input/hertz3d_frictionless.xml, 1 rank, k = 1, MUMPS full rank, measured 2026-12-07 and tabulated
+// in docs/solvers.md ("Memory and time of 3D contact", "Block low-rank"). The model was fitted on
+// the two Coulomb runs; the frictionless run is an independent check, the stopped run at 10⁶ DOFs a
+// lower bound. The per-DOF constant of the elasticity benchmarks (7.4 kB) predicted about half of
+// every peak.
+TEUCHOS_UNIT_TEST(MeshResources, ContactModelMatchesTheMeasuredPeaks)
+{
+  struct Run {
+    double dofs, elements, peakMB;
+    const char* what;
+  };
+  const std::vector<Run> stored = {{254430, 6216, 3489, "Coulomb, mesh size 0.12"},
+                                   {505971, 12456, 7999, "Coulomb, mesh size 0.0935"},
+                                   {204852, 4993, 2784, "frictionless, mesh size 0.13"}};
+  const double baseline = 0.112e9;  // the program before any mesh, 1 rank (docs/mesh.md)
+  auto limit = makeResourceLimit(24.0, 3, 1, 1, 0, 0.0, "", baseline);
+  limit.contact = true;
+  for (const auto& r : stored) {
+    const double model = dataBytes(r.dofs, 3, true) + r.elements * kMeshBytesPerElement + baseline;
+    const double old = dataBytes(r.dofs, 3, false) + r.elements * kMeshBytesPerElement + baseline;
+    const double peak = r.peakMB * 1048576.0;
+    out << r.what << ": " << r.dofs << " DOFs, measured " << r.peakMB << " MB, model "
+        << model / 1048576.0 << " MB (ratio " << model / peak << "), without the contact model "
+        << old / 1048576.0 << " MB (ratio " << old / peak << ")\n";
+    TEST_FLOATING_EQUALITY(model, peak, 0.05);
+  }
+  // The run at 1026492 DOFs (25422 tetrahedra, mesh size 0.0733) was stopped by `ulimit -v` 16 GB
+  // in its first factorisation at 15029 MB resident, with MUMPS' analysis asking for 13750 MB:
+  // the model must lie above what it reached.
+  const double stopped = dataBytes(1026492, 3, true) + 25422 * kMeshBytesPerElement + baseline;
+  out << "1026492 DOFs: model " << stopped / 1048576.0 << " MB, stopped at 15029 MB\n";
+  TEST_COMPARE(stopped, >, 15029 * 1048576.0);
+  // The limit inverts the superlinear model: the largest mesh that fits uses the memory.
+  const double n = limit.maxElements();
+  out << "24 GB: at most " << n << " tetrahedra, " << limit.dofs(n) << " DOFs\n";
+  TEST_FLOATING_EQUALITY(limit.totalBytes(n), 24e9, 1e-6);
+  TEST_ASSERT(limit.dofs(n) > 1e6 && limit.dofs(n) < 1.3e6);
+  TEST_ASSERT(contains(limit.describe(2e5), "3D contact"));
+  // 2D contact and scenes without contact keep the per-DOF constants.
+  TEST_EQUALITY(dataBytes(1e5, 2, true), 1e5 * kBytesPerDof2D);
+  TEST_EQUALITY(dataBytes(1e5, 3, false), 1e5 * kBytesPerDof3D);
+}
+
 // An explicit limit counts the program's own memory before the mesh (docs/mesh.md "Resource
 // limits"): a limit at or below it is refused naming the key, the baseline and a valid value; above
 // it, the mesh may use what is left. The default limit (the available memory, measured with the

@@ -59,6 +59,27 @@ double closureFactor(int dimension, bool alongBoundary)
 
 double bytesPerDof(int dimension) { return dimension == 2 ? kBytesPerDof2D : kBytesPerDof3D; }
 
+double dataBytes(double dofs, int dimension, bool contact)
+{
+  if (contact && dimension == 3)
+    return kContactBytesPerDof3D * dofs + kContactFactorBytes3D * std::pow(dofs, 4.0 / 3.0);
+  return dofs * bytesPerDof(dimension);
+}
+
+double ResourceLimit::maxElements() const
+{
+  const double room = memoryBytes - baselineBytes;
+  if (!(contact && dimension == 3) || !(room < std::numeric_limits<double>::infinity()))
+    return room / bytes(1.0);
+  // bytes(e) is increasing and superlinear: bisect on [0, the linear bound].
+  double lo = 0.0, hi = std::max(room / bytes(1.0), 1.0);
+  for (int i = 0; i < 200 && hi - lo > 1e-9 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (bytes(mid) > room ? hi : lo) = mid;
+  }
+  return lo;
+}
+
 double availableMemoryBytes(std::string* source)
 {
   std::ifstream in("/proc/meminfo");
@@ -120,9 +141,15 @@ std::string ResourceLimit::describe(double elements) const
   os.precision(2);
   os << "about " << elements << (dimension == 2 ? " triangles, " : " tetrahedra, ")
      << dofs(elements) << " DOFs (degree " << degree << ") and " << gb(totalBytes(elements))
-     << " of memory (" << bytesPerDof(dimension) / 1e3
-     << " kB per DOF for the system and MUMPS factors, measured in "
-     << "docs/benchmarks.md" << (baselineBytes > 0.0 ? ", and the program's own memory" : "")
+     << " of memory (";
+  if (contact && dimension == 3)
+    os << dataBytes(dofs(elements), dimension, contact) / dofs(elements) / 1e3
+       << " kB per DOF at this size for the system and MUMPS' LU factors of 3D contact, "
+       << "growing like DOFs^(1/3), measured in docs/solvers.md";
+  else
+    os << bytesPerDof(dimension) / 1e3
+       << " kB per DOF for the system and MUMPS factors, measured in docs/benchmarks.md";
+  os << (baselineBytes > 0.0 ? ", and the program's own memory" : "")
      << "), above the memory limit of " << gb(memoryBytes) << " (" << source() << ")";
   if (maxDofs > 0 && dofs(elements) > static_cast<double>(maxDofs))
     os << "; 'Adaptivity/Max DOFs' is " << maxDofs;

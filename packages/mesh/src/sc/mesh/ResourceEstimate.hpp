@@ -25,6 +25,16 @@ inline constexpr double kGmshElementsFactor3D = 0.75;
 /// 7.4 kB/DOF in 3D.
 inline constexpr double kBytesPerDof2D = 2.2e3;
 inline constexpr double kBytesPerDof3D = 7.4e3;
+/// 3D contact (docs/mesh.md "Resource limits", measured on input/hertz3d.xml in docs/solvers.md
+/// "Memory and time of 3D contact"): bytes = a·N + c·N^(4/3) for N DOFs. The contact systems are
+/// not symmetric, so MUMPS factorises LU (about twice the entries of the LDLᵀ kBytesPerDof3D was
+/// measured with) with delayed pivots, into a workspace it allocates from the analysis' full-rank
+/// estimate, and the 3D factors grow faster than N (their estimate like N^1.47 from 2.5·10⁵ to
+/// 5.1·10⁵ DOFs); the linear part is the assembled system (about 100 entries per DOF), its
+/// equilibrated copy and MUMPS' copies of all its entries (not of one triangle as for LDLᵀ).
+/// Fitted on the peaks at 254 430 and 505 971 DOFs (1 rank, k = 1, full rank): 3489 and 7999 MB.
+inline constexpr double kContactBytesPerDof3D = 4.5e3;  ///< a, bytes per DOF
+inline constexpr double kContactFactorBytes3D = 148.0;  ///< c, bytes per DOF^(4/3)
 /// The replicated mesh, per element and per rank (docs/mesh.md: about 0.4 kB per tetrahedron).
 inline constexpr double kMeshBytesPerElement = 400.0;
 /// New elements per element selected by a bisection sweep (its bisection and the conforming
@@ -58,6 +68,11 @@ double dofsPerElement(int dimension, int degree);
 /// kBytesPerDof2D / 3D.
 double bytesPerDof(int dimension);
 
+/// Memory of a run's data for `dofs` DOFs (the mesh not included): dofs · bytesPerDof(d), and
+/// for 3D contact kContactBytesPerDof3D · dofs + kContactFactorBytes3D · dofs^(4/3). 2D contact
+/// uses the 2D constant (not measured with contact).
+double dataBytes(double dofs, int dimension, bool contact);
+
 /// The machine's available memory in bytes: MemAvailable of /proc/meminfo, else
 /// sysconf(_SC_AVPHYS_PAGES) · page size. `source` says which.
 double availableMemoryBytes(std::string* source = nullptr);
@@ -77,16 +92,19 @@ struct ResourceLimit {
   int degree = 1;
   int ranks = 1;
   long long maxDofs = 0;  ///< Adaptivity/Max DOFs (0: not given), named in messages
+  bool contact = false;   ///< the scene has contact (3D: the contact model of dataBytes)
   bool active() const { return memoryBytes < std::numeric_limits<double>::infinity(); }
   double dofs(double elements) const { return elements * dofsPerElement(dimension, degree); }
-  /// Bytes of a run on a mesh of `elements` elements: DOFs · bytesPerDof + ranks · mesh.
+  /// Bytes of a run on a mesh of `elements` elements: dataBytes(DOFs) + ranks · mesh.
   double bytes(double elements) const
   {
-    return dofs(elements) * bytesPerDof(dimension) + ranks * elements * kMeshBytesPerElement;
+    return dataBytes(dofs(elements), dimension, contact) + ranks * elements * kMeshBytesPerElement;
   }
   /// bytes(elements) and the baseline: what is compared with memoryBytes.
   double totalBytes(double elements) const { return bytes(elements) + baselineBytes; }
-  double maxElements() const { return (memoryBytes - baselineBytes) / bytes(1.0); }
+  /// The most elements whose bytes fit in memoryBytes − baselineBytes (bytes grows
+  /// monotonically; linear without 3D contact).
+  double maxElements() const;
   /// memorySource, with the baseline it counts: "'Mesh/Memory limit (GB)', of which the program
   /// held 0.16 GB before the mesh (VmRSS, 1 rank)".
   std::string source() const;

@@ -188,6 +188,9 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
   }
   id.ICNTL(5) = 0;  // assembled matrix
   id.ICNTL(7) = options_.ordering;
+  // MUMPS' own scaling, applied on top of ours (the matrix it sees is D_r A D_c when
+  // equilibrating).
+  id.ICNTL(8) = options_.scaling >= 0 ? options_.scaling : (equilibrationEnabled() ? 0 : 77);
   id.ICNTL(14) = options_.memoryRelaxationPercent;
   id.ICNTL(18) = 3;  // distributed assembled matrix: structure at analysis, values at factorisation
   id.ICNTL(20) = 0;  // dense centralised right-hand side
@@ -241,6 +244,8 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
 
   m.call(1);
   checkInfo(id, 1);
+  stats_.mumpsEstimatedMemoryMaxMB = id.INFOG(16);
+  stats_.mumpsEstimatedMemoryTotalMB = id.INFOG(17);
 }
 
 void MumpsSolver::doNumericFactorization(const Teuchos::RCP<const CrsMatrix>& A)
@@ -277,6 +282,7 @@ void MumpsSolver::doNumericFactorization(const Teuchos::RCP<const CrsMatrix>& A)
   stats_.mumpsFactorMemoryTotalMB = id.INFOG(19);
   stats_.mumpsMemoryMaxMB = id.INFOG(21);
   stats_.mumpsMemoryTotalMB = id.INFOG(22);
+  stats_.mumpsScaling = id.INFOG(33);
 }
 
 void MumpsSolver::doSolve(const MultiVector& b, MultiVector& x)

@@ -23,6 +23,10 @@ struct MumpsOptions {
   /// CNTL(7), the block low-rank dropping parameter; > 0 turns BLR on in the factorisation and
   /// the solve (ICNTL(35) = 2), 0 keeps the full-rank factorisation (ICNTL(35) = 0).
   double lowRankTolerance{};
+  /// ICNTL(8), MUMPS' own scaling: 77 (MUMPS chooses), 0 (none), or -1: none when our Ruiz
+  /// equilibration ran (DirectSolver::equilibrationEnabled), else 77 (docs/solvers.md
+  /// "Equilibration").
+  int scaling = -1;
 };
 
 class MumpsSolver : public DirectSolver {

@@ -38,13 +38,20 @@ struct SolveStatistics {
   /// Entries in the factors (KLU2: nnz(L)+nnz(U); MUMPS: INFOG(29)); -1 if unknown.
   long long factorNonzeros = -1;
 
-  // MUMPS memory (MB) of the last factorisation, -1 for other solvers:
+  // MUMPS memory (MB) of the last analysis and factorisation, -1 for other solvers:
+  // INFOG(16)/(17): the analysis' estimate for an in-core full-rank factorisation, max per rank /
+  // sum over ranks (the workspace is allocated from it, also with block low-rank);
   // INFOG(18)/(19): factorisation, max per rank / sum over ranks;
   // INFOG(21)/(22): factorisation + solve, max per rank / sum over ranks.
+  double mumpsEstimatedMemoryMaxMB = -1.0;
+  double mumpsEstimatedMemoryTotalMB = -1.0;
   double mumpsFactorMemoryMaxMB = -1.0;
   double mumpsFactorMemoryTotalMB = -1.0;
   double mumpsMemoryMaxMB = -1.0;
   double mumpsMemoryTotalMB = -1.0;
+  /// MUMPS: the scaling MUMPS applied in the last factorisation, INFOG(33) (the effective
+  /// ICNTL(8): 0 none, 7/8 its iterative row/column scalings); -1 for other solvers.
+  int mumpsScaling = -1;
 };
 
 }  // namespace sc::solvers
