@@ -141,8 +141,12 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, SolverPolicyDecidesOnce)
 
   TEST_THROW(SolverPolicy(list("Iterative"), contact3D), sc::core::InputError);
   TEST_THROW(SolverPolicy(list("Iterative"), contact2DDegree2), sc::core::InputError);
-  // verified: run_hertz2d_multigrid_*; 3D and k >= 2 stay rejected (above)
+  // verified: run_hertz2d_multigrid_* and run_hertz3d_multigrid_*; the 3D exact block and
+  // k >= 2 stay rejected (above)
   TEST_ASSERT(SolverPolicy(list("Iterative", "Multigrid"), contact2D).needsHierarchy());
+  TEST_ASSERT(SolverPolicy(list("Iterative", "Multigrid"), contact3D).needsHierarchy());
+  TEST_THROW(SolverPolicy(list("Iterative", "Multigrid"), SolverPolicy::Scene{3, 2, true, 2}),
+             sc::core::InputError);
   TEST_THROW(SolverPolicy(list("Iterative", "MUMPS", "MINRES"), contact2D), sc::core::InputError);
   TEST_THROW(SolverPolicy(list("Iterative", "MUMPS", "MINRES", false), plain3D),
              sc::core::InputError);

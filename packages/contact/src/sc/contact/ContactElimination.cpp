@@ -113,8 +113,55 @@ ActiveSetSolver::Elimination ActiveSetSolver::eliminationBasis(const CrsMatrix& 
   e.T = build(tCols, tVals);
   auto QtK = Teuchos::rcp(new CrsMatrix(rowMap, 0));
   Tpetra::MatrixMatrix::Multiply(*e.Q, true, K, false, *QtK);
-  e.G = Teuchos::rcp(new CrsMatrix(rowMap, 0));
-  Tpetra::MatrixMatrix::Multiply(*QtK, false, *e.Q, false, *e.G);
+  auto G = Teuchos::rcp(new CrsMatrix(rowMap, 0));
+  Tpetra::MatrixMatrix::Multiply(*QtK, false, *e.Q, false, *G);
+  // The rows (p, 0..d−1) of one point get one pattern, the union of theirs (explicit zeros): a
+  // mixed row (Coulomb slip, the 3D Hüeber–Stadler–Wohlmuth rows) combines them and has entries
+  // in the point's own coordinates. With a frame along the axes these rows are K's rows of single
+  // components, whose patterns differed in 3D (docs/solvers.md "Contact with the stress
+  // multigrid", 3D).
+  {
+    const auto& colMap = *G->getColMap();
+    std::vector<std::vector<GO>> cols(n);
+    std::vector<std::vector<double>> vals(n);
+    for (LO i = 0; i < n; ++i) {
+      CrsMatrix::local_inds_host_view_type inds;
+      CrsMatrix::values_host_view_type v;
+      G->getLocalRowView(i, inds, v);
+      for (size_t k = 0; k < inds.extent(0); ++k) {
+        cols[i].push_back(colMap.getGlobalElement(inds(k)));
+        vals[i].push_back(v(k));
+      }
+    }
+    for (const auto& p : points_) {
+      const ContactFace& cf = faces_[p.block];
+      std::vector<GO> all;
+      for (int r = 0; r < d; ++r) {
+        const auto& c = cols[rowMap->getLocalElement(cf.gids[p.index][r])];
+        all.insert(all.end(), c.begin(), c.end());
+      }
+      std::sort(all.begin(), all.end());
+      all.erase(std::unique(all.begin(), all.end()), all.end());
+      for (int r = 0; r < d; ++r) {
+        const LO row = rowMap->getLocalElement(cf.gids[p.index][r]);
+        std::vector<GO> c = cols[row];
+        std::sort(c.begin(), c.end());
+        for (GO g : all)
+          if (!std::binary_search(c.begin(), c.end(), g)) {
+            cols[row].push_back(g);
+            vals[row].push_back(0.0);
+          }
+      }
+    }
+    std::vector<size_t> counts(n);
+    for (LO i = 0; i < n; ++i)
+      counts[i] = cols[i].size();
+    e.G = Teuchos::rcp(new CrsMatrix(rowMap, Teuchos::ArrayView<const size_t>(counts)));
+    for (LO i = 0; i < n; ++i)
+      e.G->insertGlobalValues(rowMap->getGlobalElement(i), Teuchos::ArrayView<const GO>(cols[i]),
+                              Teuchos::ArrayView<const double>(vals[i]));
+    e.G->fillComplete(K.getDomainMap(), K.getRangeMap());
+  }
   e.Qb = Teuchos::rcp(new MultiVector(b.getMap(), 1));
   e.Q->apply(b, *e.Qb, Teuchos::TRANS);
   return e;

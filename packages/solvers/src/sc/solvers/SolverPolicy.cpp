@@ -15,13 +15,18 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
   // the nested meshes (the levels are chosen per cycle).
   hierarchy_ = (iterative && il.get<std::string>("Stress block") == "Multigrid") ||
                (isAuto() && scene.dimension == 3 && !contact);
-  // The Krylov solver with contact rows is verified (against MUMPS: run_hertz2d_iterative, and
-  // with Stress block = Multigrid run_hertz2d_multigrid_*) in 2D at degree 1 only; other contact
-  // scenes are rejected until a test covers them.
-  SC_THROW_IF(iterative && contact && (scene.dimension != 2 || scene.degree != 1), core::InputError,
-              "Linear Solver/Type = Iterative with contact is verified only in 2D at "
-              "'Discretization/Degree' = 1 (docs/solvers.md); this scene is "
-                  << scene.dimension << "D at degree " << scene.degree << ": use MUMPS or KLU2");
+  // The Krylov solver with contact rows is verified (against MUMPS) at degree 1: in 2D with every
+  // stress block (run_hertz2d_iterative, run_hertz2d_multigrid_*), in 3D with Stress block =
+  // Multigrid (run_hertz3d_multigrid_*); other contact scenes are rejected until a test covers
+  // them.
+  const bool multigrid = il.get<std::string>("Stress block") == "Multigrid";
+  SC_THROW_IF(iterative && contact && (scene.degree != 1 || (scene.dimension == 3 && !multigrid)),
+              core::InputError,
+              "Linear Solver/Type = Iterative with contact is verified only at "
+              "'Discretization/Degree' = 1, in 3D only with 'Linear Solver/Iterative/Stress block' "
+              "= Multigrid (docs/solvers.md); this scene is "
+                  << scene.dimension << "D at degree " << scene.degree << " with Stress block = "
+                  << il.get<std::string>("Stress block") << ": use MUMPS or KLU2");
   // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md
   // §"Contact and friction"), and Symmetric = false declines to exploit symmetry.
   SC_THROW_IF(iterative && il.get<std::string>("Method") == "MINRES" &&

@@ -22,8 +22,9 @@ public:
   };
 
   /// `validatedList`: the deck's validated "Linear Solver" list (every key present). Throws
-  /// InputError for Type = Iterative with contact outside 2D at degree 1, Stress block =
-  /// Multigrid with contact, and Method = MINRES with contact or Symmetric = false.
+  /// InputError for Type = Iterative with contact at degree ≥ 2 or in 3D with an exact stress
+  /// block (3D contact: Stress block = Multigrid only), and Method = MINRES with contact or
+  /// Symmetric = false.
   SolverPolicy(const Teuchos::ParameterList& validatedList, const Scene& scene);
 
   /// Keep the nested meshes of the run: Stress block = Multigrid, or Type = Auto where it may
