@@ -18,10 +18,14 @@ Usage (repository root, after building; SC_BUILD_DIR or --build, default build/)
       alternating (1, 2, 1, 2, ...), R times each; per phase the seconds summed over the cycles
       (each cycle's phase the slowest rank's), the fastest of the R runs, and the whole-process
       wall time with the efficiency T_1 / (n T_n) against the first rank count.
+  --lock FILE: take an exclusive flock on FILE for each run only (the timing and `uptime` start
+      once it is held), so that a shared machine's other jobs wait between runs, not during them.
   /usr/bin/python3 docs/studies/adaptive_benchmark.py --smoke   # a few seconds (CTest)
 The 2D run to 10^6 DOFs takes about 2 minutes on one core, the 3D run to 5*10^5 about 10.
 """
 import argparse
+import contextlib
+import fcntl
 import json
 import os
 import shutil
@@ -66,7 +70,21 @@ def uptime():
         return "(uptime not available)"
 
 
-def run(app, name, deck, sets, ranks, outdir):
+@contextlib.contextmanager
+def held(path):
+    """An exclusive flock on path for the block (nothing without a path)."""
+    if not path:
+        yield
+        return
+    with open(path, "a") as f:
+        fcntl.flock(f, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(f, fcntl.LOCK_UN)
+
+
+def run(app, name, deck, sets, ranks, outdir, lock=None):
     out = os.path.join(outdir, name + "_np%d" % ranks)
     cmd = [app, os.path.join(ROOT, "input", deck), "--quiet", "--output", out]
     for s in sets:
@@ -74,11 +92,12 @@ def run(app, name, deck, sets, ranks, outdir):
     if ranks > 1:
         flags = ["--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
         cmd = ["mpiexec"] + flags + ["-n", str(ranks)] + cmd
-    before = uptime()
-    t0 = time.time()
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    seconds = time.time() - t0
-    after = uptime()
+    with held(lock):
+        before = uptime()
+        t0 = time.time()
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        seconds = time.time() - t0
+        after = uptime()
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     return summary, seconds, before, after, cmd
@@ -147,7 +166,8 @@ def scaling(args, app):
               (name, args.scaling, args.repeat))
         for r in range(args.repeat):
             for n in counts:
-                summary, seconds, before, after, cmd = run(app, name, deck, sets, n, args.output)
+                summary, seconds, before, after, cmd = run(app, name, deck, sets, n, args.output,
+                                                          args.lock)
                 print("run %d, %d rank(s): %.1f s wall, %s DOFs in %d cycles; uptime before: %s; "
                       "after: %s" % (r + 1, n, seconds,
                                      "{:,}".format(summary["cycles"][-1]["dofs"]["total"]),
@@ -202,6 +222,7 @@ def main():
     ap.add_argument("--keep", action="store_true", help="keep the runs' output directories")
     ap.add_argument("--scaling", help="strong scaling over these rank counts, e.g. 1,2")
     ap.add_argument("--repeat", type=int, default=1, help="--scaling: runs per rank count")
+    ap.add_argument("--lock", help="flock this file for each run only (shared machines)")
     args = ap.parse_args()
 
     app = os.path.join(args.build, "apps", "stresscontact", "stresscontact")
@@ -211,7 +232,8 @@ def main():
         scaling(args, app)
         return
     for name, (deck, sets) in cases(args).items():
-        summary, seconds, before, after, cmd = run(app, name, deck, sets, args.ranks, args.output)
+        summary, seconds, before, after, cmd = run(app, name, deck, sets, args.ranks, args.output,
+                                                  args.lock)
         print("## %s, %d rank(s): %d cycles to %s DOFs, %.1f s wall" %
               (name, args.ranks, len(summary["cycles"]) - 1,
                "{:,}".format(summary["cycles"][-1]["dofs"]["total"]), seconds))
