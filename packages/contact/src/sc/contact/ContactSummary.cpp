@@ -230,7 +230,10 @@ ContactSummary summarizeContact(const std::vector<ContactPoint>& points, int dim
     pressure.push_back(all[i + 2]);
   }
   out.zoneSize = zoneSize(s, active, dim == 2, &out.zoneResolution);
-  if (dim == 2 && !pressures.empty()) {
+  // Whether pressures were given is decided over all ranks: a rank owning no contact point has
+  // an empty vector, and every rank must report the same summary.
+  const bool fit = core::maxOverRanks(comm, pressures.empty() ? 0 : 1) > 0;
+  if (dim == 2 && fit) {
     std::vector<double> mirrored(s.size());
     for (std::size_t i = 0; i < s.size(); ++i)
       mirrored[i] = -s[i];

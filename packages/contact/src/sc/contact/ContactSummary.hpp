@@ -58,7 +58,8 @@ constexpr int kFittedPositions = 6;
 /// 1e-12 × 2μ, a strain of 1e-12: a zero load then reports no zone). `pressures`: the contact
 /// pressure −σ_N at each point's position x (contact::pointValues: with Bernstein constraints of
 /// degree ≥ 2 a control value is not the traction's value there), for the fitted half-width;
-/// empty: no fitted half-width (fittedZoneSize stays 0).
+/// empty on every rank: no fitted half-width (fittedZoneSize stays 0). A rank that owns no point
+/// passes an empty vector either way; the choice is made over all ranks.
 ContactSummary summarizeContact(const std::vector<ContactPoint>& localPoints, int dim,
                                 const std::vector<double>& obstacleNormal,
                                 const Teuchos::Comm<int>& comm, double pressureFloor = 0.0,
