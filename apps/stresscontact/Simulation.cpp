@@ -97,6 +97,14 @@ void Simulation::setupMesh()
                                    settings_.discretization.degree, comm_->getSize(),
                                    settings_.adaptivity.maxDofs, available, source, baseline);
   limit_.contact = boundaryConditions_.hasContact();  // 3D contact: LU factors, N^(4/3)
+  // Type = Auto solves 3D contact systems from a threshold on with the multigrid: its memory
+  // model there, not MUMPS' (docs/mesh.md "Resource limits"), with Coulomb friction plus the
+  // basis of GMRES (the slip steps are non-symmetric), which Belos allocates whole.
+  if (const long long from = settings_.solverPolicy->autoIterativeFrom(); from >= 0) {
+    limit_.multigridFromDofs = static_cast<double>(from);
+    if (settings_.contact.frictionLaw == contact::FrictionLaw::Coulomb)
+      limit_.multigridBytesPerDof += 8.0 * settings_.solverPolicy->gmresBasisVectors();
+  }
   // Rank 0 runs Gmsh and broadcasts: every rank holds the bit-identical mesh.
   refiner_ = mesh::MeshFactory::build(settings_.mesh, settings_.problem.dimension, *comm_,
                                       /*splitBoundarySimplices=*/false, limit_);
@@ -445,7 +453,8 @@ adapt::NextMeshForecast Simulation::forecastNextMesh(const adapt::Marking& marki
                           : uniform;
   f.dofs = static_cast<double>(space_->numGlobalDofs()) * next / n;
   const auto data = [&](double dofs, double elements) {
-    return mesh::dataBytes(dofs, d, limit_.contact) +
+    return mesh::dataBytes(dofs, d, limit_.contact, limit_.multigridFromDofs,
+                           limit_.multigridBytesPerDof) +
            limit_.ranks * elements * mesh::kMeshBytesPerElement;
   };
   f.bytes = data(f.dofs, next) + limit_.baselineBytes;

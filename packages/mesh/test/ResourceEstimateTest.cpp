@@ -192,6 +192,52 @@ TEUCHOS_UNIT_TEST(MeshResources, ContactModelMatchesTheMeasuredPeaks)
   TEST_EQUALITY(dataBytes(1e5, 3, false), 1e5 * kBytesPerDof3D);
 }
 
+// 3D contact under Linear Solver/Type = Auto (docs/mesh.md "Resource limits", docs/solvers.md
+// "Type = Auto"): from the DOFs where Auto takes the stress multigrid the linear multigrid model
+// replaces MUMPS' superlinear one, so a mesh that MUMPS could not factorise in the limit is not
+// refused when the multigrid will solve it, while a smaller one that MUMPS would factorise still
+// is when MUMPS' model exceeds the limit.
+TEUCHOS_UNIT_TEST(MeshResources, AutoMultigridContactUsesTheMultigridModel)
+{
+  auto limit = makeResourceLimit(24.0, 3, 1, 2, 0, 0.0, "", 0.2e9);
+  limit.contact = true;
+  const double perElement = dofsPerElement(3, 1);
+  const double big = 2.2e6 / perElement;  // the 2·10⁶ DOF cycle
+  TEST_ASSERT(!limit.fits(big));          // MUMPS' LU: ~43 GB
+  limit.multigridFromDofs = 1e6;
+  TEST_FLOATING_EQUALITY(dataBytes(2.2e6, 3, true, 1e6), 2.2e6 * kContactMultigridBytesPerDof3D,
+                         1e-14);
+  TEST_EQUALITY(dataBytes(0.9e6, 3, true, 1e6), dataBytes(0.9e6, 3, true));
+  TEST_EQUALITY(dataBytes(2.2e6, 3, false, 1e6), dataBytes(2.2e6, 3, false));  // contact only
+  TEST_EQUALITY(dataBytes(2.2e6, 2, true, 1e6), dataBytes(2.2e6, 2, true));    // 3D only
+  TEST_ASSERT(limit.fits(big));
+  TEST_ASSERT(contains(limit.describe(big), "stress multigrid"));
+  TEST_ASSERT(contains(limit.describe(0.5e6 / perElement), "MUMPS' LU factors of 3D contact"));
+  // The largest mesh that fits is in the multigrid's range, inverted linearly.
+  const double n = limit.maxElements();
+  out << "24 GB, multigrid from 1e6 DOFs: at most " << limit.dofs(n) << " DOFs\n";
+  TEST_FLOATING_EQUALITY(limit.totalBytes(n), 24e9, 1e-9);
+  TEST_ASSERT(limit.dofs(n) > 2.5e6);
+  // 16 GB: MUMPS' model refuses 0.95·10⁶ DOFs (about 18 GB), the multigrid takes 1.5·10⁶.
+  auto small = makeResourceLimit(16.0, 3, 1, 2, 0, 0.0, "", 0.2e9);
+  small.contact = true;
+  small.multigridFromDofs = 1e6;
+  TEST_ASSERT(!small.fits(0.95e6 / perElement));
+  TEST_ASSERT(small.fits(1.5e6 / perElement));
+  TEST_ASSERT(small.fits(small.maxElements()));
+  // Coulomb friction: the flexible GMRES basis, 2 (Restart + 1) vectors, counts too. At the
+  // default Restart = 300 it is 4.8 kB per DOF and a 2.2·10⁶ DOF cycle no longer fits 24 GB.
+  limit.multigridBytesPerDof = kContactMultigridBytesPerDof3D + 8.0 * 2 * 301;
+  TEST_FLOATING_EQUALITY(dataBytes(2.2e6, 3, true, 1e6, limit.multigridBytesPerDof),
+                         2.2e6 * (kContactMultigridBytesPerDof3D + 4816.0), 1e-14);
+  TEST_ASSERT(!limit.fits(big));
+  TEST_FLOATING_EQUALITY(limit.totalBytes(limit.maxElements()), 24e9, 1e-9);
+  // A threshold above what fits: MUMPS' range only, bisected.
+  small.multigridFromDofs = 5e6;
+  TEST_FLOATING_EQUALITY(small.totalBytes(small.maxElements()), 16e9, 1e-6);
+  TEST_ASSERT(small.dofs(small.maxElements()) < 1e6);
+}
+
 // An explicit limit counts the program's own memory before the mesh (docs/mesh.md "Resource
 // limits"): a limit at or below it is refused naming the key, the baseline and a valid value; above
 // it, the mesh may use what is left. The default limit (the available memory, measured with the

@@ -66,8 +66,9 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, DefaultsAndDocumentation)
   TEST_ASSERT(solver->exploitsSymmetry());
 }
 
-// Type = Auto (docs/solvers.md): MUMPS except 3D, no contact, with a hierarchy, at or above
-// kAutoIterativeDofs3D unknowns; it must be resolved before a solver is built.
+// Type = Auto (docs/solvers.md "Type = Auto"): MUMPS except 3D with a hierarchy at or above
+// kAutoIterativeDofs3D unknowns without contact, or kAutoIterativeContactDofs3D with contact at
+// degree 1; it must be resolved before a solver is built.
 TEUCHOS_UNIT_TEST(LinearSolverFactory, AutoPolicy)
 {
   using sc::solvers::ProblemSize;
@@ -82,9 +83,40 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, AutoPolicy)
   };
   TEST_EQUALITY(typeFor({2, 10 * big, 1, false, true}), "MUMPS");  // 2D: MUMPS is faster
   TEST_EQUALITY(typeFor({3, big - 1, 1, false, true}), "MUMPS");   // below the threshold
-  TEST_EQUALITY(typeFor({3, big, 4, true, true}), "MUMPS");        // contact
   TEST_EQUALITY(typeFor({3, big, 2, false, false}), "MUMPS");      // no hierarchy
   TEST_EQUALITY(typeFor({3, big, 2, false, true}), "Iterative");
+  // Contact: its own threshold, below the one without contact (MUMPS factorises LU, 4.5 kB N +
+  // 148 B N^(4/3): ~19 GB at 10^6), in 3D at degree 1 only.
+  const long long contactBig = sc::solvers::kAutoIterativeContactDofs3D;
+  TEST_ASSERT(contactBig < big);
+  TEST_EQUALITY(typeFor({3, contactBig - 1, 2, true, true, 1}), "MUMPS");
+  TEST_EQUALITY(typeFor({3, contactBig, 2, true, true, 1}), "Iterative");
+  TEST_EQUALITY(typeFor({3, contactBig, 1, true, true, 1}), "Iterative");  // any rank count
+  TEST_EQUALITY(typeFor({3, contactBig - 1, 2, false, true}), "MUMPS");    // not without contact
+  TEST_EQUALITY(typeFor({3, 10 * big, 2, true, true, 2}), "MUMPS");        // degree 2: not verified
+  TEST_EQUALITY(typeFor({2, 10 * big, 2, true, true, 1}), "MUMPS");        // 2D contact
+  TEST_EQUALITY(typeFor({3, 10 * big, 2, true, false, 1}), "MUMPS");       // no hierarchy
+  {
+    const auto c = sc::solvers::resolveAutoType(sc::solvers::LinearSolverFactory::validate(pl),
+                                                {3, contactBig, 2, true, true, 1});
+    TEST_EQUALITY(c.sublist("Iterative").get<std::string>("Stress block"), "Multigrid");
+    TEST_EQUALITY(c.sublist("Iterative").get<std::string>("Method"), "Auto");  // GMRES w/ contact
+    // the key moves the contact threshold only
+    Teuchos::ParameterList lowered(pl);
+    lowered.set("Auto iterative contact unknowns", 1000);
+    const auto v = sc::solvers::LinearSolverFactory::validate(lowered);
+    TEST_EQUALITY(
+        sc::solvers::resolveAutoType(v, {3, 1000, 1, true, true, 1}).get<std::string>("Type"),
+        "Iterative");
+    TEST_EQUALITY(
+        sc::solvers::resolveAutoType(v, {3, 999, 1, true, true, 1}).get<std::string>("Type"),
+        "MUMPS");
+    TEST_EQUALITY(
+        sc::solvers::resolveAutoType(v, {3, 1000, 1, false, true}).get<std::string>("Type"),
+        "MUMPS");
+    lowered.set("Auto iterative contact unknowns", 0);
+    TEST_THROW(sc::solvers::LinearSolverFactory::validate(lowered), sc::core::InputError);
+  }
   const auto resolved = sc::solvers::resolveAutoType(sc::solvers::LinearSolverFactory::validate(pl),
                                                      {3, big, 1, false, true});
   TEST_EQUALITY(resolved.sublist("Iterative").get<std::string>("Stress block"), "Multigrid");
@@ -123,9 +155,22 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, SolverPolicyDecidesOnce)
   TEST_EQUALITY(autoPlain3D.typeFor(big), "Iterative");
   TEST_ASSERT(autoPlain3D.usesMultigrid(big));
   TEST_EQUALITY(autoPlain3D.create(0)->name(), "MUMPS");
+  TEST_EQUALITY(autoPlain3D.autoIterativeFrom(), big);
+  const long long contactBig = sc::solvers::kAutoIterativeContactDofs3D;
   const SolverPolicy autoContact3D(list("Auto"), contact3D);
-  TEST_ASSERT(!autoContact3D.needsHierarchy());
-  TEST_EQUALITY(autoContact3D.typeFor(big), "MUMPS");
+  TEST_ASSERT(autoContact3D.needsHierarchy());
+  TEST_EQUALITY(autoContact3D.typeFor(contactBig - 1), "MUMPS");
+  TEST_ASSERT(!autoContact3D.usesMultigrid(contactBig - 1));
+  TEST_EQUALITY(autoContact3D.typeFor(contactBig), "Iterative");
+  TEST_ASSERT(autoContact3D.usesMultigrid(contactBig));
+  TEST_EQUALITY(autoContact3D.autoIterativeFrom(), contactBig);
+  TEST_EQUALITY(autoContact3D.gmresBasisVectors(), 2 * (300 + 1));  // default Restart = 300
+  const SolverPolicy autoContact3DDegree2(list("Auto"), SolverPolicy::Scene{3, 2, true, 2});
+  TEST_ASSERT(!autoContact3DDegree2.needsHierarchy());
+  TEST_EQUALITY(autoContact3DDegree2.typeFor(10 * big), "MUMPS");
+  TEST_EQUALITY(autoContact3DDegree2.autoIterativeFrom(), -1);
+  TEST_ASSERT(!SolverPolicy(list("Auto"), contact2D).needsHierarchy());
+  TEST_EQUALITY(SolverPolicy(list("Auto"), contact2D).typeFor(10 * big), "MUMPS");
   TEST_ASSERT(!SolverPolicy(list("Auto"), plain2D).needsHierarchy());
 
   const SolverPolicy multigrid(list("Iterative", "Multigrid"), plain2D);

@@ -264,7 +264,7 @@ void checkInitialEstimate(const MeshSettings& p, int dimension, const ResourceLi
   if (measure <= 0.0) return;  // Gmsh file: checked once read (its size is the file's)
   const double h = p.initialMeshSize;
   const double n = estimateInitialElements(measure, h, dimension);
-  if (!(n > limit.maxElements())) return;
+  if (limit.fits(n)) return;
   const double hMin = h * std::pow(n / limit.maxElements(), 1.0 / dimension);
   SC_THROW_IF(true, sc::core::InputError,
               "'Mesh/Initial mesh size' = "
@@ -282,13 +282,13 @@ void checkRefinementEstimate(const MeshSettings& p, const SimplexMesh& initial,
   const int d = initial.dim();
   const double n0 = initial.numElements();
   const double maxN = limit.maxElements();
-  if (n0 > maxN)
+  if (!limit.fits(n0))
     SC_THROW_IF(true, sc::core::InputError,
                 "the initial mesh (" << initial.origin() << ") has " << limit.describe(n0)
                                      << ". Use a coarser mesh.");
   const int uniform = p.uniformRefinements;
   const double nU = n0 * std::pow(2.0, d * uniform);
-  if (nU > maxN) {
+  if (!limit.fits(nU)) {
     const int fit = static_cast<int>(std::floor(std::log2(maxN / n0) / d));
     SC_THROW_IF(true, sc::core::InputError,
                 "'Mesh/Uniform refinements' = " << uniform << " is too many: the initial mesh's "
@@ -300,12 +300,12 @@ void checkRefinementEstimate(const MeshSettings& p, const SimplexMesh& initial,
   const int levels = p.local.levels;
   if (levels == 0) return;
   const auto est = MeshFactory::estimateRefinement(p, initial);
-  if (est.local > maxN) {
+  if (!limit.fits(est.local)) {
     MeshSettings q(p);
     int fit = 0;
     for (; fit < levels; ++fit) {
       q.local.levels = fit + 1;
-      if (MeshFactory::estimateRefinement(q, initial).local > maxN) break;
+      if (!limit.fits(MeshFactory::estimateRefinement(q, initial).local)) break;
     }
     SC_THROW_IF(true, sc::core::InputError,
                 "'Mesh/Local refinement/Levels' = "
@@ -476,7 +476,7 @@ void MeshFactory::refineLocally(BisectionRefiner& refiner, const LocalRefinement
     // The estimate of build() is checked again with the real counts before each sweep.
     const double next = m->numElements() +
                         closureFactor(m->dim(), sel.part >= 0) * static_cast<double>(marked.size());
-    SC_THROW_IF(limit.active() && next > limit.maxElements(), sc::core::InputError,
+    SC_THROW_IF(limit.active() && !limit.fits(next), sc::core::InputError,
                 "'Mesh/Local refinement/Levels' = "
                     << levels << " is too many: sweep " << level + 1 << " would bisect "
                     << marked.size() << " of " << m->numElements() << " elements, giving "

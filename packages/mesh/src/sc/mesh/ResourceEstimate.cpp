@@ -59,8 +59,10 @@ double closureFactor(int dimension, bool alongBoundary)
 
 double bytesPerDof(int dimension) { return dimension == 2 ? kBytesPerDof2D : kBytesPerDof3D; }
 
-double dataBytes(double dofs, int dimension, bool contact)
+double dataBytes(double dofs, int dimension, bool contact, double multigridFromDofs,
+                 double multigridBytesPerDof)
 {
+  if (contact && dimension == 3 && dofs >= multigridFromDofs) return multigridBytesPerDof * dofs;
   if (contact && dimension == 3)
     return kContactBytesPerDof3D * dofs + kContactFactorBytes3D * std::pow(dofs, 4.0 / 3.0);
   return dofs * bytesPerDof(dimension);
@@ -71,8 +73,15 @@ double ResourceLimit::maxElements() const
   const double room = memoryBytes - baselineBytes;
   if (!(contact && dimension == 3) || !(room < std::numeric_limits<double>::infinity()))
     return room / bytes(1.0);
-  // bytes(e) is increasing and superlinear: bisect on [0, the linear bound].
-  double lo = 0.0, hi = std::max(room / bytes(1.0), 1.0);
+  // From multigridFromDofs on the model is linear: the largest mesh there, if one fits.
+  const double switchElements = multigridFromDofs / dofsPerElement(dimension, degree);
+  if (switchElements < std::numeric_limits<double>::infinity()) {
+    const double linear = room / (multigridBytesPerDof * dofsPerElement(dimension, degree) +
+                                  ranks * kMeshBytesPerElement);
+    if (linear >= switchElements) return linear;
+  }
+  // Below it MUMPS' bytes(e) is increasing and superlinear: bisect on [0, the linear bound].
+  double lo = 0.0, hi = std::max(std::min(room / bytes(1.0), switchElements), 1.0);
   for (int i = 0; i < 200 && hi - lo > 1e-9 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
     (bytes(mid) > room ? hi : lo) = mid;
@@ -142,7 +151,11 @@ std::string ResourceLimit::describe(double elements) const
   os << "about " << elements << (dimension == 2 ? " triangles, " : " tetrahedra, ")
      << dofs(elements) << " DOFs (degree " << degree << ") and " << gb(totalBytes(elements))
      << " of memory (";
-  if (contact && dimension == 3)
+  if (contact && dimension == 3 && dofs(elements) >= multigridFromDofs)
+    os << multigridBytesPerDof / 1e3
+       << " kB per DOF for the system, the stress multigrid and its Krylov basis, which Linear "
+       << "Solver/Type = Auto chooses from " << multigridFromDofs << " DOFs, docs/mesh.md";
+  else if (contact && dimension == 3)
     os << dataBytes(dofs(elements), dimension, contact) / dofs(elements) / 1e3
        << " kB per DOF at this size for the system and MUMPS' LU factors of 3D contact, "
        << "growing like DOFs^(1/3), measured in docs/solvers.md";

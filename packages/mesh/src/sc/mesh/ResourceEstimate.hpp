@@ -35,6 +35,12 @@ inline constexpr double kBytesPerDof3D = 7.4e3;
 /// Fitted on the peaks at 254 430 and 505 971 DOFs (1 rank, k = 1, full rank): 3489 and 7999 MB.
 inline constexpr double kContactBytesPerDof3D = 4.5e3;  ///< a, bytes per DOF
 inline constexpr double kContactFactorBytes3D = 148.0;  ///< c, bytes per DOF^(4/3)
+/// 3D contact solved by the stress multigrid (Linear Solver/Type = Auto from 'Auto iterative
+/// contact unknowns', docs/solvers.md "Type = Auto"): bytes per DOF, linear. The elasticity
+/// multigrid measured 7.3 kB per DOF at 2 070 999 unknowns (docs/solvers.md "3D at 2·10⁶
+/// unknowns"); with contact the run also holds the GMRES basis and the eliminated contact
+/// operator (docs/solvers.md "3D contact at 2·10⁶ DOFs").
+inline constexpr double kContactMultigridBytesPerDof3D = 7.3e3;
 /// The replicated mesh, per element and per rank (docs/mesh.md: about 0.4 kB per tetrahedron).
 inline constexpr double kMeshBytesPerElement = 400.0;
 /// New elements per element selected by a bisection sweep (its bisection and the conforming
@@ -69,9 +75,13 @@ double dofsPerElement(int dimension, int degree);
 double bytesPerDof(int dimension);
 
 /// Memory of a run's data for `dofs` DOFs (the mesh not included): dofs · bytesPerDof(d), and
-/// for 3D contact kContactBytesPerDof3D · dofs + kContactFactorBytes3D · dofs^(4/3). 2D contact
+/// for 3D contact kContactBytesPerDof3D · dofs + kContactFactorBytes3D · dofs^(4/3) (MUMPS' LU),
+/// or multigridBytesPerDof · dofs from `multigridFromDofs` DOFs on (Type = Auto solves those with
+/// the stress multigrid; kContactMultigridBytesPerDof3D plus the caller's Krylov basis). 2D contact
 /// uses the 2D constant (not measured with contact).
-double dataBytes(double dofs, int dimension, bool contact);
+double dataBytes(double dofs, int dimension, bool contact,
+                 double multigridFromDofs = std::numeric_limits<double>::infinity(),
+                 double multigridBytesPerDof = kContactMultigridBytesPerDof3D);
 
 /// The machine's available memory in bytes: MemAvailable of /proc/meminfo, else
 /// sysconf(_SC_AVPHYS_PAGES) · page size. `source` says which.
@@ -93,17 +103,28 @@ struct ResourceLimit {
   int ranks = 1;
   long long maxDofs = 0;  ///< Adaptivity/Max DOFs (0: not given), named in messages
   bool contact = false;   ///< the scene has contact (3D: the contact model of dataBytes)
+  /// 3D contact under Type = Auto: the DOFs from which the multigrid solves the system and its
+  /// linear model replaces MUMPS' (SolverPolicy::autoIterativeFrom); infinity: always MUMPS.
+  double multigridFromDofs = std::numeric_limits<double>::infinity();
+  /// Bytes per DOF there: kContactMultigridBytesPerDof3D and the Krylov basis the run's GMRES
+  /// allocates (flexible GMRES: 2 (Restart + 1) vectors of 8 bytes per DOF, set by the application
+  /// for Coulomb friction, whose slip steps are non-symmetric).
+  double multigridBytesPerDof = kContactMultigridBytesPerDof3D;
   bool active() const { return memoryBytes < std::numeric_limits<double>::infinity(); }
   double dofs(double elements) const { return elements * dofsPerElement(dimension, degree); }
   /// Bytes of a run on a mesh of `elements` elements: dataBytes(DOFs) + ranks · mesh.
   double bytes(double elements) const
   {
-    return dataBytes(dofs(elements), dimension, contact) + ranks * elements * kMeshBytesPerElement;
+    return dataBytes(dofs(elements), dimension, contact, multigridFromDofs, multigridBytesPerDof) +
+           ranks * elements * kMeshBytesPerElement;
   }
   /// bytes(elements) and the baseline: what is compared with memoryBytes.
   double totalBytes(double elements) const { return bytes(elements) + baselineBytes; }
-  /// The most elements whose bytes fit in memoryBytes − baselineBytes (bytes grows
-  /// monotonically; linear without 3D contact).
+  /// Whether a mesh of `elements` elements fits: totalBytes ≤ memoryBytes.
+  bool fits(double elements) const { return !(totalBytes(elements) > memoryBytes); }
+  /// The most elements whose bytes fit in memoryBytes − baselineBytes (linear without 3D
+  /// contact; MUMPS' superlinear model inverted by bisection; with multigridFromDofs, the larger
+  /// mesh of the two models, so smaller meshes need not all fit: ask fits()).
   double maxElements() const;
   /// memorySource, with the baseline it counts: "'Mesh/Memory limit (GB)', of which the program
   /// held 0.16 GB before the mesh (VmRSS, 1 rank)".

@@ -42,18 +42,27 @@ struct ProblemSize {
   int dimension = 2;
   long long dofs = 0;  ///< global unknowns of the system
   int ranks = 1;
-  bool contact = false;    ///< contact rows (the stress multigrid is not available with them)
+  bool contact = false;    ///< contact rows (non-symmetric; the multigrid only in 3D at k = 1)
   bool hierarchy = false;  ///< the caller provides BlockStructure::multigrid (nested meshes)
+  int degree = 1;          ///< Discretization/Degree (the contact rule holds at k = 1 only)
 };
 
-/// `Type = Auto`: MUMPS, except in 3D without contact, with a mesh hierarchy and at least
-/// `Auto iterative unknowns` (default kAutoIterativeDofs3D) unknowns, where MUMPS' memory
-/// (~N^{4/3}) exceeds one 24 GB node: there Iterative with Stress block = Multigrid (memory ~N).
-/// Measured in docs/solvers.md.
+/// `Type = Auto`: MUMPS, except in 3D with a mesh hierarchy and at least `Auto iterative
+/// unknowns` (default kAutoIterativeDofs3D) unknowns without contact, or at least `Auto iterative
+/// contact unknowns` (default kAutoIterativeContactDofs3D) with contact at degree 1, where MUMPS'
+/// memory (~N^{4/3}; LU with contact) exceeds one 24 GB node: there Iterative with Stress block =
+/// Multigrid (memory ~N). 2D, and 3D contact at degree >= 2, always MUMPS. Measured in
+/// docs/solvers.md ("Type = Auto").
 constexpr long long kAutoIterativeDofs3D = 1500000;
+constexpr long long kAutoIterativeContactDofs3D = 1000000;
+/// Whether `Type = Auto` with these thresholds gives a problem the multigrid (the rule above,
+/// without the hierarchy and the size: whether it can, at some size).
+bool autoMayUseMultigrid(int dimension, bool contact, int degree);
+/// The Auto threshold for a problem (the key that applies to it), from the validated list.
+long long autoIterativeThreshold(const Teuchos::ParameterList& validatedList, bool contact);
 /// The list to build for `problem`: the validated list itself unless its Type is Auto, else a
 /// copy with Type = MUMPS or Type = Iterative and Iterative/Stress block = Multigrid, by the rule
-/// above ('Auto iterative unknowns' the threshold).
+/// above.
 Teuchos::ParameterList resolveAutoType(const Teuchos::ParameterList& validatedList,
                                        const ProblemSize& problem);
 

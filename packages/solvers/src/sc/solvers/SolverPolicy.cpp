@@ -11,10 +11,10 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
   const auto& il = list_.sublist("Iterative");
   const bool iterative = type_ == "Iterative";
   const bool contact = scene.contact;
-  // Stress block = Multigrid, or Type = Auto where it may choose it (3D without contact): keep
-  // the nested meshes (the levels are chosen per cycle).
+  // Stress block = Multigrid, or Type = Auto where it may choose it (3D; with contact at degree
+  // 1): keep the nested meshes (the levels are chosen per cycle).
   hierarchy_ = (iterative && il.get<std::string>("Stress block") == "Multigrid") ||
-               (isAuto() && scene.dimension == 3 && !contact);
+               (isAuto() && autoMayUseMultigrid(scene.dimension, contact, scene.degree));
   // The Krylov solver with contact rows is verified (against MUMPS) at degree 1: in 2D with every
   // stress block (run_hertz2d_iterative, run_hertz2d_multigrid_*), in 3D with Stress block =
   // Multigrid (run_hertz3d_multigrid_*); other contact scenes are rejected until a test covers
@@ -41,14 +41,28 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
 std::string SolverPolicy::typeFor(long long dofs) const
 {
   if (!isAuto()) return type_;
-  return resolveAutoType(list_, {scene_.dimension, dofs, scene_.ranks, scene_.contact, hierarchy_})
-      .get<std::string>("Type");
+  return resolveAutoType(list_, problem(dofs)).get<std::string>("Type");
 }
 
 Teuchos::RCP<LinearSolver> SolverPolicy::create(long long dofs) const
 {
-  return LinearSolverFactory::create(
-      resolveAutoType(list_, {scene_.dimension, dofs, scene_.ranks, scene_.contact, hierarchy_}));
+  return LinearSolverFactory::create(resolveAutoType(list_, problem(dofs)));
+}
+
+ProblemSize SolverPolicy::problem(long long dofs) const
+{
+  return {scene_.dimension, dofs, scene_.ranks, scene_.contact, hierarchy_, scene_.degree};
+}
+
+int SolverPolicy::gmresBasisVectors() const
+{
+  return 2 * (list_.sublist("Iterative").get<int>("Restart") + 1);
+}
+
+long long SolverPolicy::autoIterativeFrom() const
+{
+  if (!isAuto() || !hierarchy_) return -1;
+  return autoIterativeThreshold(list_, scene_.contact);
 }
 
 }  // namespace sc::solvers

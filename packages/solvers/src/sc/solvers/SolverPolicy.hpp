@@ -9,6 +9,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include <sc/solvers/LinearSolver.hpp>
+#include <sc/solvers/LinearSolverFactory.hpp>
 
 namespace sc::solvers {
 
@@ -28,7 +29,7 @@ public:
   SolverPolicy(const Teuchos::ParameterList& validatedList, const Scene& scene);
 
   /// Keep the nested meshes of the run: Stress block = Multigrid, or Type = Auto where it may
-  /// choose the multigrid (3D without contact).
+  /// choose the multigrid (3D; with contact at degree 1).
   bool needsHierarchy() const { return hierarchy_; }
   /// Type = Auto: the solver is chosen per cycle from the system's size.
   bool isAuto() const { return type_ == "Auto"; }
@@ -38,8 +39,17 @@ public:
   bool usesMultigrid(long long dofs) const { return hierarchy_ && typeFor(dofs) == "Iterative"; }
   /// The solver for a system of `dofs` unknowns.
   Teuchos::RCP<LinearSolver> create(long long dofs) const;
+  /// Type = Auto: the unknowns from which the multigrid is chosen (the threshold key that
+  /// applies to the scene); -1 when the run never uses it under Auto (or Type is not Auto). The
+  /// resource estimate switches to the multigrid's memory model there (docs/mesh.md).
+  long long autoIterativeFrom() const;
+  /// Vectors of the system's length that GMRES allocates when it runs (flexible GMRES, Belos:
+  /// V and Z of Iterative/Restart + 1 columns each, allocated at the first iteration).
+  int gmresBasisVectors() const;
 
 private:
+  ProblemSize problem(long long dofs) const;
+
   Teuchos::ParameterList list_;
   Scene scene_;
   std::string type_;
