@@ -20,6 +20,8 @@ Usage (repository root, after building; SC_BUILD_DIR or --build, default build/)
       wall time with the efficiency T_1 / (n T_n) against the first rank count.
   --lock FILE: take an exclusive flock on FILE for each run only (the timing and `uptime` start
       once it is held), so that a shared machine's other jobs wait between runs, not during them.
+  --set KEY=VALUE (repeatable): one more --set for every run, e.g. the MUMPS ordering
+      (docs/solvers.md "Ordering").
   /usr/bin/python3 docs/studies/adaptive_benchmark.py --smoke   # a few seconds (CTest)
 The 2D run to 10^6 DOFs takes about 2 minutes on one core, the 3D run to 5*10^5 about 10.
 """
@@ -60,6 +62,8 @@ def cases(args):
         result["3d"] = ("hertz3d_frictionless.xml",
                         ["Mesh/Local refinement/Levels=0", "Adaptivity/Marking=Dorfler",
                          "Adaptivity/Cycles=100", "Adaptivity/Max DOFs=%d" % args.max_dofs_3d])
+    for deck, sets in result.values():
+        sets += args.extra_sets
     return result
 
 
@@ -223,6 +227,8 @@ def main():
     ap.add_argument("--scaling", help="strong scaling over these rank counts, e.g. 1,2")
     ap.add_argument("--repeat", type=int, default=1, help="--scaling: runs per rank count")
     ap.add_argument("--lock", help="flock this file for each run only (shared machines)")
+    ap.add_argument("--set", action="append", default=[], dest="extra_sets", metavar="KEY=VALUE",
+                    help="one more --set for every run (e.g. 'Linear Solver/MUMPS/Ordering=METIS')")
     args = ap.parse_args()
 
     app = os.path.join(args.build, "apps", "stresscontact", "stresscontact")

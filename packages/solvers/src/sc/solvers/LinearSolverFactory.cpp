@@ -185,10 +185,13 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                "doubling ICNTL(14) each time.",
                0, 20);
     declareChoice(mp, "Ordering", "AMF", {"Auto", "AMD", "AMF", "SCOTCH", "PORD", "METIS", "QAMD"},
-                  "ICNTL(7), the fill-reducing ordering of the (sequential) analysis. AMF "
-                  "(default) and QAMD gave 5-10x smaller factors than METIS on saddle-point "
-                  "systems (docs/solvers.md); METIS is better for definite 2D/3D Laplacians. Auto "
-                  "lets MUMPS choose, which may depend on the number of ranks.");
+                  "ICNTL(7), the fill-reducing ordering of the (sequential) analysis. METIS: "
+                  "computed by StressContact on rank 0 (METIS nested dissection of A + A^T with "
+                  "each zero-diagonal row glued to a nonzero-diagonal neighbour and eliminated "
+                  "right after it) and given to MUMPS as its pivot order (ICNTL(7) = 1): smaller "
+                  "factors than AMF on 3D contact, a slower analysis. SCOTCH: not in Debian's "
+                  "MUMPS, which then makes its Auto choice. Auto lets MUMPS choose, which may "
+                  "depend on the number of ranks (docs/solvers.md \"Ordering\", measured).");
     declareReal(mp, "Low-rank tolerance", 0.0,
                 "CNTL(7): block low-rank (BLR) factorisation with this dropping parameter, "
                 "relative to the equilibrated matrix (ICNTL(35) = 2: BLR in the factorisation "

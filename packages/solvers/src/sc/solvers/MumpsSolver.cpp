@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include <dmumps_c.h>
@@ -16,6 +18,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <sc/core/Error.hpp>
+#include <sc/solvers/SaddlePointOrdering.hpp>
 
 // MUMPS documents its controls 1-based.
 #define ICNTL(I) icntl[(I)-1]
@@ -44,6 +47,10 @@ struct MumpsSolver::Impl {
   Teuchos::RCP<const Tpetra::Import<>> gather;   // range map -> host map
   Teuchos::RCP<const Tpetra::Import<>> scatter;  // host map -> domain map
   std::vector<double> rhs;
+
+  // Our pivot order (Ordering = METIS, ICNTL(7) = 1): PERM_IN on the host, 1-based positions.
+  std::vector<MUMPS_INT> permIn;
+  MPI_Comm rawComm = MPI_COMM_SELF;
 
   void call(int job)
   {
@@ -82,6 +89,125 @@ void checkInfo(const DMUMPS_STRUC_C& id, int job)
               "MUMPS " << phaseName(job) << " failed: INFOG(1) = " << code
                        << ", INFOG(2) = " << id.INFOG(2) << ": " << MumpsSolver::errorMeaning(code)
                        << " (N = " << id.n << ", SYM = " << id.sym << ")");
+}
+
+// Ordering = METIS: the matrix graph gathered on rank 0 (the host, where the sequential analysis
+// runs), ordered there by saddlePointOrdering, returned as MUMPS' PERM_IN (1-based positions; empty
+// on the other ranks). Collective.
+std::vector<MUMPS_INT> metisPivotOrder(const CrsMatrix& A, long long firstGid, MPI_Comm comm,
+                                       bool verbose)
+{
+  const double t0 = MPI_Wtime();
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const auto rowMap = A.getRowMap();
+  const auto colMap = A.getColMap();
+  const auto lclA = A.getLocalMatrixHost();
+  const int nRows = static_cast<int>(A.getNodeNumRows());
+  // Per owned row: its 0-based global index, its length, whether its diagonal is zero; then the
+  // 0-based global columns of all owned rows.
+  std::vector<int> rows(static_cast<size_t>(nRows)), lengths(static_cast<size_t>(nRows));
+  std::vector<char> zero(static_cast<size_t>(nRows));
+  std::vector<int> cols;
+  cols.reserve(static_cast<size_t>(lclA.graph.entries.extent(0)));
+  for (int i = 0; i < nRows; ++i) {
+    const long long gi = rowMap->getGlobalElement(i) - firstGid;
+    rows[static_cast<size_t>(i)] = static_cast<int>(gi);
+    bool diagonal = false;
+    const auto b = lclA.graph.row_map(i), e = lclA.graph.row_map(i + 1);
+    for (auto k = b; k < e; ++k) {
+      const long long gj = colMap->getGlobalElement(lclA.graph.entries(k)) - firstGid;
+      cols.push_back(static_cast<int>(gj));
+      if (gj == gi && lclA.values(k) != 0.0) diagonal = true;
+    }
+    lengths[static_cast<size_t>(i)] = static_cast<int>(e - b);
+    zero[static_cast<size_t>(i)] = diagonal ? 0 : 1;
+  }
+  const long long localEntries = static_cast<long long>(cols.size());
+  long long globalEntries = 0;
+  MPI_Allreduce(&localEntries, &globalEntries, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  SC_THROW_IF(globalEntries > INT_MAX, sc::core::InputError,
+              "Linear Solver/MUMPS/Ordering = METIS: the matrix has "
+                  << globalEntries << " entries, more than the gather on rank 0 allows (" << INT_MAX
+                  << "); use AMF");
+  std::vector<int> rowCounts(static_cast<size_t>(size)), entryCounts(static_cast<size_t>(size));
+  const int localEntryCount = static_cast<int>(localEntries);
+  MPI_Gather(&nRows, 1, MPI_INT, rowCounts.data(), 1, MPI_INT, 0, comm);
+  MPI_Gather(&localEntryCount, 1, MPI_INT, entryCounts.data(), 1, MPI_INT, 0, comm);
+  std::vector<int> rowOffsets(static_cast<size_t>(size), 0),
+      entryOffsets(static_cast<size_t>(size), 0);
+  int totalRows = 0, totalEntries = 0;
+  if (rank == 0)
+    for (int r = 0; r < size; ++r) {
+      rowOffsets[static_cast<size_t>(r)] = totalRows;
+      entryOffsets[static_cast<size_t>(r)] = totalEntries;
+      totalRows += rowCounts[static_cast<size_t>(r)];
+      totalEntries += entryCounts[static_cast<size_t>(r)];
+    }
+  std::vector<int> allRows(static_cast<size_t>(totalRows)),
+      allLengths(static_cast<size_t>(totalRows)), allCols(static_cast<size_t>(totalEntries));
+  std::vector<char> allZero(static_cast<size_t>(totalRows));
+  MPI_Gatherv(rows.data(), nRows, MPI_INT, allRows.data(), rowCounts.data(), rowOffsets.data(),
+              MPI_INT, 0, comm);
+  MPI_Gatherv(lengths.data(), nRows, MPI_INT, allLengths.data(), rowCounts.data(),
+              rowOffsets.data(), MPI_INT, 0, comm);
+  MPI_Gatherv(zero.data(), nRows, MPI_CHAR, allZero.data(), rowCounts.data(), rowOffsets.data(),
+              MPI_CHAR, 0, comm);
+  MPI_Gatherv(cols.data(), localEntryCount, MPI_INT, allCols.data(), entryCounts.data(),
+              entryOffsets.data(), MPI_INT, 0, comm);
+  cols = std::vector<int>();
+  const double t1 = MPI_Wtime();
+
+  std::vector<MUMPS_INT> permIn;
+  int failed = 0;
+  std::string message;
+  if (rank == 0) {
+    try {
+      // CSR in global row order.
+      const int n = totalRows;
+      std::vector<std::int64_t> start(static_cast<size_t>(n) + 1, 0);
+      std::vector<char> zeroDiagonal(static_cast<size_t>(n));
+      for (int r = 0; r < n; ++r) {
+        start[static_cast<size_t>(allRows[static_cast<size_t>(r)]) + 1] =
+            allLengths[static_cast<size_t>(r)];
+        zeroDiagonal[static_cast<size_t>(allRows[static_cast<size_t>(r)])] =
+            allZero[static_cast<size_t>(r)];
+      }
+      for (int i = 0; i < n; ++i)
+        start[static_cast<size_t>(i) + 1] += start[static_cast<size_t>(i)];
+      std::vector<int> columns(static_cast<size_t>(totalEntries));
+      std::int64_t source = 0;
+      for (int r = 0; r < n; ++r) {
+        const auto len = allLengths[static_cast<size_t>(r)];
+        std::copy(allCols.begin() + source, allCols.begin() + source + len,
+                  columns.begin() + start[static_cast<size_t>(allRows[static_cast<size_t>(r)])]);
+        source += len;
+      }
+      allCols = std::vector<int>();
+      double metisSeconds = 0.0;
+      const auto position = saddlePointOrdering(n, start, columns, zeroDiagonal, &metisSeconds);
+      permIn.resize(static_cast<size_t>(n));
+      for (int i = 0; i < n; ++i)
+        permIn[static_cast<size_t>(i)] =
+            static_cast<MUMPS_INT>(position[static_cast<size_t>(i)] + 1);
+      if (verbose) {
+        const long long zeros = std::count(zeroDiagonal.begin(), zeroDiagonal.end(), 1);
+        std::printf("StressContact METIS ordering: %d unknowns (%lld with a zero diagonal), "
+                    "%d entries; gather %.3f s, ordering %.3f s (METIS_NodeND %.3f s)\n",
+                    n, zeros, totalEntries, t1 - t0, MPI_Wtime() - t1, metisSeconds);
+        std::fflush(stdout);
+      }
+    } catch (const std::exception& e) {
+      failed = 1;
+      message = e.what();
+    }
+  }
+  MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
+  SC_THROW_IF(failed != 0, sc::core::Error,
+              "Linear Solver/MUMPS/Ordering = METIS failed"
+                  << (rank == 0 ? ": " + message : std::string(" on rank 0")));
+  return permIn;
 }
 
 }  // namespace
@@ -165,6 +291,7 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
       SC_THROW_IF(comm->getSize() != 1, sc::core::InternalError,
                   "MUMPS: the matrix's communicator is not an MPI communicator");
     m.id = DMUMPS_STRUC_C{};
+    m.rawComm = raw;
     m.id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(raw));
     m.id.par = 1;  // the host takes part in the factorisation
     m.id.sym = isSymmetric() ? 2 : 0;
@@ -187,7 +314,11 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
     id.ICNTL(4) = 0;
   }
   id.ICNTL(5) = 0;  // assembled matrix
-  id.ICNTL(7) = options_.ordering;
+  // Ordering = METIS (5): MUMPS 5.5.1 as Debian builds it has no METIS and would fall back to its
+  // automatic choice; we compute a METIS ordering that respects the zero diagonal block and give
+  // it as the pivot order (ICNTL(7) = 1, PERM_IN on the host; docs/solvers.md "Ordering").
+  const bool ownOrdering = options_.ordering == 5;
+  id.ICNTL(7) = ownOrdering ? 1 : options_.ordering;
   // MUMPS' own scaling, applied on top of ours (the matrix it sees is D_r A D_c when
   // equilibrating).
   id.ICNTL(8) = options_.scaling >= 0 ? options_.scaling : (equilibrationEnabled() ? 0 : 77);
@@ -241,6 +372,14 @@ void MumpsSolver::doSymbolicFactorization(const Teuchos::RCP<const CrsMatrix>& A
       Teuchos::rcp(new Map(nG, m.rank == 0 ? static_cast<size_t>(nGlobal) : 0, firstGid, comm));
   m.gather = Teuchos::rcp(new Tpetra::Import<>(A->getRangeMap(), m.hostMap));
   m.scatter = Teuchos::rcp(new Tpetra::Import<>(m.hostMap, A->getDomainMap()));
+
+  if (ownOrdering) {
+    m.permIn = metisPivotOrder(*A, firstGid, m.rawComm, options_.verbose);
+    id.perm_in = m.rank == 0 ? m.permIn.data() : nullptr;
+  } else {
+    m.permIn.clear();
+    id.perm_in = nullptr;
+  }
 
   m.call(1);
   checkInfo(id, 1);
