@@ -186,10 +186,14 @@ TEUCHOS_UNIT_TEST(LinearSolverFactory, SolverPolicyDecidesOnce)
 
   TEST_THROW(SolverPolicy(list("Iterative"), contact3D), sc::core::InputError);
   TEST_THROW(SolverPolicy(list("Iterative"), contact2DDegree2), sc::core::InputError);
-  // verified: run_hertz2d_multigrid_* and run_hertz3d_multigrid_*; the 3D exact block and
-  // k >= 2 stay rejected (above)
+  // verified: run_hertz2d_multigrid_*, run_hertz3d_multigrid_* and, at degree 2 in 2D,
+  // run_hertz2d_multigrid_degree2_*; the 3D exact block, the exact block at k >= 2 (above), 2D
+  // k >= 3 and 3D k >= 2 stay rejected
   TEST_ASSERT(SolverPolicy(list("Iterative", "Multigrid"), contact2D).needsHierarchy());
   TEST_ASSERT(SolverPolicy(list("Iterative", "Multigrid"), contact3D).needsHierarchy());
+  TEST_ASSERT(SolverPolicy(list("Iterative", "Multigrid"), contact2DDegree2).needsHierarchy());
+  TEST_THROW(SolverPolicy(list("Iterative", "Multigrid"), SolverPolicy::Scene{2, 3, true, 1}),
+             sc::core::InputError);
   TEST_THROW(SolverPolicy(list("Iterative", "Multigrid"), SolverPolicy::Scene{3, 2, true, 2}),
              sc::core::InputError);
   TEST_THROW(SolverPolicy(list("Iterative", "MUMPS", "MINRES"), contact2D), sc::core::InputError);

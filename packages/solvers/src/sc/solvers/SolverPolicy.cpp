@@ -15,16 +15,18 @@ SolverPolicy::SolverPolicy(const Teuchos::ParameterList& validatedList, const Sc
   // 1): keep the nested meshes (the levels are chosen per cycle).
   hierarchy_ = (iterative && il.get<std::string>("Stress block") == "Multigrid") ||
                (isAuto() && autoMayUseMultigrid(scene.dimension, contact, scene.degree));
-  // The Krylov solver with contact rows is verified (against MUMPS) at degree 1: in 2D with every
-  // stress block (run_hertz2d_iterative, run_hertz2d_multigrid_*), in 3D with Stress block =
-  // Multigrid (run_hertz3d_multigrid_*); other contact scenes are rejected until a test covers
-  // them.
+  // The Krylov solver with contact rows is verified (against MUMPS) at degree 1 in 2D with every
+  // stress block (run_hertz2d_iterative, run_hertz2d_multigrid_*) and in 3D with Stress block =
+  // Multigrid (run_hertz3d_multigrid_*), and at degree 2 in 2D with Stress block = Multigrid
+  // (run_hertz2d_multigrid_degree2_*); other contact scenes are rejected until a test covers them.
   const bool multigrid = il.get<std::string>("Stress block") == "Multigrid";
-  SC_THROW_IF(iterative && contact && (scene.degree != 1 || (scene.dimension == 3 && !multigrid)),
-              core::InputError,
+  const bool verified = (scene.degree == 1 && (scene.dimension == 2 || multigrid)) ||
+                        (scene.degree == 2 && scene.dimension == 2 && multigrid);
+  SC_THROW_IF(iterative && contact && !verified, core::InputError,
               "Linear Solver/Type = Iterative with contact is verified only at "
-              "'Discretization/Degree' = 1, in 3D only with 'Linear Solver/Iterative/Stress block' "
-              "= Multigrid (docs/solvers.md); this scene is "
+              "'Discretization/Degree' = 1 (in 3D only with 'Linear Solver/Iterative/Stress "
+              "block' = Multigrid) and in 2D at degree 2 with Stress block = Multigrid "
+              "(docs/solvers.md); this scene is "
                   << scene.dimension << "D at degree " << scene.degree << " with Stress block = "
                   << il.get<std::string>("Stress block") << ": use MUMPS or KLU2");
   // MINRES needs a symmetric system: contact rows make it non-symmetric (docs/theory.md
