@@ -38,6 +38,9 @@ struct LinearSolveRecord {
   long long symbolicReuses = 0, preconditionerSetups = 0;
   int solves = 0;
   std::vector<int> iterationsPerSolve;  ///< empty with a direct solver
+  /// Contact, Stopping = Fixed: the Krylov iterations that continued the settled state's solve
+  /// (contact/BalancedStopping.hpp finalSolve), not in iterationsPerSolve.
+  int finalSolveIterations = 0;
   /// A direct solver's seconds in this cycle (rank 0's clock): equilibration, analyses,
   /// factorisations and triangular solves, summed over the cycle's solves (0 for Krylov).
   double cycleEquilibrationSeconds = 0.0, cycleSymbolicSeconds = 0.0, cycleNumericSeconds = 0.0,

@@ -157,10 +157,12 @@ void RunRecorder::recordCycle(const CycleResults& results, const adapt::Marking&
     // One linear solve per Newton step (1 without contact); Krylov iterations per solve.
     c["linear_solves"] = ls.solves;
     if (ls.iterative) {
-      long long total = 0;
+      long long total = ls.finalSolveIterations;
       for (int it : ls.iterationsPerSolve)
         total += it;
-      c["linear_iterations"] = {{"per_solve", ls.iterationsPerSolve}, {"total", total}};
+      c["linear_iterations"] = {{"per_solve", ls.iterationsPerSolve},
+                                {"final_solve", ls.finalSolveIterations},
+                                {"total", total}};
     } else {
       c["linear_iterations"] = nullptr;
     }

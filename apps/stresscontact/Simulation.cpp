@@ -121,7 +121,8 @@ void Simulation::setupContactProblem(bool contactHoldsBody)
   contactProblem_ = std::make_unique<contact::ContactProblem>(
       settings_.material, boundaryConditions_.boundariesOfType(core::BoundaryType::Contact), comm_);
   contactProblem_->setContactHoldsBody(contactHoldsBody);
-  if (balancedStopping_.isBalanced()) contactProblem_->setBalancedStopping(&balancedStopping_);
+  // Balanced: every Newton step's solve; Fixed: the final solve (contact/BalancedStopping.hpp)
+  contactProblem_->setBalancedStopping(&balancedStopping_);
   contactProblem_->setStepCallback([this](int step, long long changes, double seconds) {
     std::ostringstream os;
     os << "Newton step " << step << ": " << changes << " points changed state";
@@ -274,6 +275,11 @@ void Simulation::solveContact()
   if (st.balancedBound > 0.0)
     os << "; balanced Krylov stop: tolerance " << st.krylovTolerance << ", algebraic error "
        << st.algebraicError << " (bound gamma eta = " << st.balancedBound << ")";
+  if (st.finalBound > 0.0)
+    os << "; final solve: " << st.finalSolveIterations
+       << " more Krylov iterations, estimated algebraic error " << st.finalAlgebraicError
+       << " (bound " << contact::BalancedStopping::finalFraction() << " eta = " << st.finalBound
+       << ")";
   progress_.report("contact solve", os.str());
   solved_ = true;
   warnIfNoContact();
@@ -300,6 +306,8 @@ void Simulation::recordSolve()
   // One linear solve per Newton step (1 without contact).
   ls.solves = contactProblem_ ? contactProblem_->solver().statistics().newtonIterations : 1;
   ls.iterationsPerSolve = linearIterations_;
+  if (contactProblem_)
+    ls.finalSolveIterations = contactProblem_->solver().statistics().finalSolveIterations;
   if (contactProblem_) {
     ContactRecord& c = r.contact.emplace();
     c.points = contactProblem_->solver().points();

@@ -407,6 +407,19 @@ void Simulation::restoreOutputs()
   const io::CheckpointFile& cp = *checkpoint_;
   Json cycles = Json::parse(cp.string("summary_cycles"));
   const int cycle = static_cast<int>(cp.ints("cycle")[0]);
+  // Stopping = Fixed: the final Krylov solve's bound is a fraction of the last cycle's η
+  // (contact/BalancedStopping.hpp), as in the uninterrupted run. (Balanced keeps the fixed
+  // tolerance in a restarted run's first cycle, docs/theory.md.)
+  if (!balancedStopping_.isBalanced() && !settings_.loadSteps.given && !cycles.empty()) {
+    const auto& last = cycles.back();
+    const auto eta = last.contains("eta") ? last.at("eta") : Json();
+    if (eta.is_object() && eta.contains("total") && eta.at("total").is_number() &&
+        eta.contains("stress_energy_norm") && eta.at("stress_energy_norm").is_number()) {
+      const double total = eta.at("total").get<double>();
+      const double norm = eta.at("stress_energy_norm").get<double>();
+      balancedStopping_.setDiscretisationError(total, norm > 0.0 ? total / norm : 0.0);
+    }
+  }
   summary_->json()["cycles"] = std::move(cycles);
   summary_->json()["restart"] = {{"checkpoint_cycle", cycle},
                                  {"ranks_before", cp.ints("ranks")[0]}};

@@ -62,6 +62,12 @@ struct ContactStatistics {
   double algebraicError = -1.0;
   double krylovTolerance = 0.0;
   double balancedBound = 0.0;
+  /// Stopping = Fixed (BalancedStopping::finalSolve): the Krylov iterations that continued the
+  /// settled state's solve (not in linearIterationsPerStep), its estimated algebraic error after
+  /// them (−1: not applied) and the bound (0: not applied).
+  int finalSolveIterations = 0;
+  double finalAlgebraicError = -1.0;
+  double finalBound = 0.0;
 };
 
 class ActiveSetSolver {

@@ -88,4 +88,57 @@ BalancedStopping::Result BalancedStopping::solve(solvers::LinearSolver& solver,
   return r;
 }
 
+bool BalancedStopping::finalApplies(const solvers::LinearSolver& solver) const
+{
+  return !balanced_ && eta_ > 0.0 && solver.isIterative();
+}
+
+double BalancedStopping::finalFraction() { return kFinalFraction; }
+
+BalancedStopping::Result BalancedStopping::finalSolve(solvers::LinearSolver& solver,
+                                                      const Tpetra::MultiVector<>& rhs,
+                                                      Tpetra::MultiVector<>& x,
+                                                      const Tpetra::CrsMatrix<>& energy,
+                                                      long long stressDofs) const
+{
+  const double fixedTolerance = solver.relativeTolerance();
+  struct Restore {
+    solvers::LinearSolver& s;
+    double tolerance;
+    ~Restore() { s.setRelativeTolerance(tolerance); }
+  } restore{solver, fixedTolerance};
+  const double bound = finalFraction() * eta_;
+  Result r;
+  Tpetra::MultiVector<> error(x.getMap(), 1), saved(x, Teuchos::Copy);
+  SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
+              "contact Newton: the solver " << solver.name() << " gives no error estimate");
+  r.algebraicError = stressEnergyNorm(energy, error, stressDofs);
+  double residual = solver.lastSolveStats().relativeResidual;
+  r.tolerance = fixedTolerance;
+  // A relative residual below ~1e-13 is out of reach in double precision.
+  constexpr double kTightest = 1e-13;
+  while (r.algebraicError > bound && residual > kTightest && r.stages < 4) {
+    const double perResidual = r.algebraicError / std::max(residual, 1e-300);
+    const double tolerance =
+        std::max(kTightest, std::min(0.1 * residual, 0.5 * bound / perResidual));
+    solver.setRelativeTolerance(tolerance);
+    Tpetra::deep_copy(saved, x);
+    try {
+      solver.solve(rhs, x);
+    } catch (const core::ConvergenceError&) {
+      // every rank throws together: keep the iterate before this stage
+      Tpetra::deep_copy(x, saved);
+      break;
+    }
+    r.iterations += solver.lastSolveStats().iterations;
+    r.tolerance = tolerance;
+    ++r.stages;
+    residual = solver.lastSolveStats().relativeResidual;
+    SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
+                "contact Newton: the solver " << solver.name() << " gives no error estimate");
+    r.algebraicError = stressEnergyNorm(energy, error, stressDofs);
+  }
+  return r;
+}
+
 }  // namespace sc::contact

@@ -172,7 +172,7 @@ Teuchos::RCP<const Teuchos::ParameterList> LinearSolverFactory::getValidParamete
                0, 20);
     declareReal(il, "Multigrid smoother eigenvalue ratio", 10.0,
                 "Stress block = Multigrid: the Chebyshev smoother damps the spectrum of B A in "
-                "[λ_max/ratio, λ_max] (B the patch smoother, λ_max from power iteration).",
+                "[λ_max/ratio, λ_max] (B the patch smoother, λ_max from Lanczos or Arnoldi steps).",
                 1.0, true, 1e6, false);
     auto& mp = pl->sublist(
         "MUMPS", false,

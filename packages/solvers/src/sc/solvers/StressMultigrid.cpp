@@ -53,7 +53,7 @@ public:
     // order before the post-smoothing.
     std::vector<std::shared_ptr<const PatchSmoother>> zoneBlocks;
     int largestZoneBlock = 0;  // DOFs (this rank)
-    double lambdaMax = 1.0;    // upper bound of the spectrum of B A (power iteration × 1.1)
+    double lambdaMax = 1.0;    // upper bound of the spectrum of B A (Lanczos/Arnoldi × 1.1)
   };
   std::vector<Level> levels;  // coarsest first
   Teuchos::RCP<DirectSolver> coarse;
@@ -140,44 +140,14 @@ public:
   }
 };
 
-// λ_max(B A) by `steps` Lanczos steps on B A in the A inner product (B A is self-adjoint there
-// when A and B are SPD), from a random vector: the largest eigenvalue of the Lanczos matrix, a
-// lower bound that converges from below. The power iteration (below; 15 steps, ‖B A v‖/‖v‖)
-// converges only like (λ_2/λ_1)^k and missed the top of the spectrum when its eigenvectors are
-// local: on the contact systems λ_max(B A) = 3 (2D vertex patches; the top eigenvectors sit on
-// the interior DOFs of a few dozen elements) was estimated as 2.33, the Chebyshev polynomial
-// (< 1 in modulus only up to 1.1 × its upper end) amplified those modes and the V-cycle was
-// indefinite (MINRES broke down: docs/solvers.md "Contact with the stress multigrid").
-double largestEigenvalueLanczos(const PatchSmoother& B, const CrsMatrix& A, int steps)
+// The safeguard of both Krylov estimates below: they take at least `steps` steps, then go on by 5
+// while the top Ritz value grew by more than this over the last 5, up to 2 × `steps` (a top that
+// still rises has not converged; docs/solvers.md "Contact with the stress multigrid").
+constexpr double kRitzGrowth = 0.01;
+
+// The top Ritz value of a symmetric tridiagonal matrix (α on the diagonal, β beside it).
+double topOfTridiagonal(const std::vector<double>& alpha, const std::vector<double>& beta)
 {
-  MultiVector v(A.getDomainMap(), 1), Av(A.getRangeMap(), 1), z(A.getDomainMap(), 1),
-      Az(A.getRangeMap(), 1), vPrev(A.getDomainMap(), 1, true), AvPrev(A.getRangeMap(), 1, true);
-  v.randomize();
-  Teuchos::Array<double> d(1);
-  A.apply(v, Av);
-  v.dot(Av, d());
-  if (!(d[0] > 0.0)) return 1.0;
-  v.scale(1.0 / std::sqrt(d[0]));
-  Av.scale(1.0 / std::sqrt(d[0]));
-  std::vector<double> alpha, beta;
-  for (int k = 0; k < steps; ++k) {
-    B.apply(Av, z, 1.0, 0.0);  // z = B A v
-    z.dot(Av, d());            // α = (B A v, v)_A
-    alpha.push_back(d[0]);
-    A.apply(z, Az);
-    const double b = beta.empty() ? 0.0 : beta.back();
-    z.update(-alpha.back(), v, -b, vPrev, 1.0);
-    Az.update(-alpha.back(), Av, -b, AvPrev, 1.0);
-    z.dot(Az, d());
-    if (!(d[0] > 0.0) || k + 1 == steps) break;
-    beta.push_back(std::sqrt(d[0]));
-    Tpetra::deep_copy(vPrev, v);
-    Tpetra::deep_copy(AvPrev, Av);
-    Tpetra::deep_copy(v, z);
-    Tpetra::deep_copy(Av, Az);
-    v.scale(1.0 / beta.back());
-    Av.scale(1.0 / beta.back());
-  }
   const int n = static_cast<int>(alpha.size());
   std::vector<double> T(static_cast<std::size_t>(n) * n, 0.0), eig(n), work(3 * n + 1);
   for (int i = 0; i < n; ++i) {
@@ -195,24 +165,121 @@ double largestEigenvalueLanczos(const PatchSmoother& B, const CrsMatrix& A, int 
   return eig.back();
 }
 
-// λ_max(B A) by power iteration, for non-symmetric operators (Coulomb slip rows, LU patches),
-// where the Lanczos recurrence above does not apply.
-double largestEigenvaluePower(const PatchSmoother& B, const CrsMatrix& A, int iterations)
+// λ_max(B A) by at least `steps` Lanczos steps on B A in the A inner product (B A is self-adjoint
+// there when A and B are SPD), from a random vector: the largest eigenvalue of the Lanczos matrix,
+// a lower bound that converges from below. A power iteration (15 steps of ‖B A v‖/‖v‖) converges
+// only like (λ_2/λ_1)^k and missed the top of the spectrum when its eigenvectors are
+// local: on the contact systems λ_max(B A) = 3 (2D vertex patches; the top eigenvectors sit on
+// the interior DOFs of a few dozen elements) was estimated as 2.33, the Chebyshev polynomial
+// (< 1 in modulus only up to 1.1 × its upper end) amplified those modes and the V-cycle was
+// indefinite (MINRES broke down: docs/solvers.md "Contact with the stress multigrid").
+double largestEigenvalueLanczos(const PatchSmoother& B, const CrsMatrix& A, int steps)
 {
-  MultiVector v(A.getDomainMap(), 1), w(A.getRangeMap(), 1), z(A.getDomainMap(), 1);
+  MultiVector v(A.getDomainMap(), 1), Av(A.getRangeMap(), 1), z(A.getDomainMap(), 1),
+      Az(A.getRangeMap(), 1), vPrev(A.getDomainMap(), 1, true), AvPrev(A.getRangeMap(), 1, true);
   v.randomize();
-  double lambda = 0.0;
-  for (int it = 0; it < iterations; ++it) {
-    Teuchos::Array<double> n(1);
-    v.norm2(n());
-    v.scale(1.0 / n[0]);
-    A.apply(v, w);
-    B.apply(w, z, 1.0, 0.0);
-    z.norm2(n());
-    lambda = n[0];
+  Teuchos::Array<double> d(1);
+  A.apply(v, Av);
+  v.dot(Av, d());
+  if (!(d[0] > 0.0)) return 1.0;
+  v.scale(1.0 / std::sqrt(d[0]));
+  Av.scale(1.0 / std::sqrt(d[0]));
+  std::vector<double> alpha, beta;
+  double top = 0.0, topBefore = 0.0;
+  for (int k = 0; k < 2 * steps; ++k) {
+    B.apply(Av, z, 1.0, 0.0);  // z = B A v
+    z.dot(Av, d());            // α = (B A v, v)_A
+    alpha.push_back(d[0]);
+    A.apply(z, Az);
+    const double b = beta.empty() ? 0.0 : beta.back();
+    z.update(-alpha.back(), v, -b, vPrev, 1.0);
+    Az.update(-alpha.back(), Av, -b, AvPrev, 1.0);
+    z.dot(Az, d());
+    if ((k + 1) % 5 == 0) {
+      topBefore = top;
+      top = topOfTridiagonal(alpha, beta);
+      if (k + 1 >= steps && !(top > (1.0 + kRitzGrowth) * topBefore)) break;
+    }
+    if (!(d[0] > 0.0)) break;
+    beta.push_back(std::sqrt(d[0]));
+    Tpetra::deep_copy(vPrev, v);
+    Tpetra::deep_copy(AvPrev, Av);
     Tpetra::deep_copy(v, z);
+    Tpetra::deep_copy(Av, Az);
+    v.scale(1.0 / beta.back());
+    Av.scale(1.0 / beta.back());
   }
-  return lambda;
+  if (beta.size() >= alpha.size()) beta.resize(alpha.size() - 1);
+  return topOfTridiagonal(alpha, beta);
+}
+
+// The largest modulus of the eigenvalues of the leading n × n block of H (column-major, leading
+// dimension ld).
+double topOfHessenberg(const std::vector<double>& H, int ld, int n)
+{
+  std::vector<double> Hn(static_cast<std::size_t>(n) * n), wr(n), wi(n), work(4 * n + 16);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      Hn[static_cast<std::size_t>(j) * n + i] = H[static_cast<std::size_t>(j) * ld + i];
+  int info = 0;
+  double none = 0.0;
+  Teuchos::LAPACK<int, double>().GEEV('N', 'N', n, Hn.data(), n, wr.data(), wi.data(), &none, 1,
+                                      &none, 1, work.data(), static_cast<int>(work.size()), &info);
+  SC_THROW_IF(info != 0, sc::core::InternalError,
+              "stress multigrid: LAPACK geev failed on the Arnoldi matrix (info " << info << ")");
+  double top = 0.0;
+  for (int i = 0; i < n; ++i)
+    top = std::max(top, std::hypot(wr[i], wi[i]));
+  return top;
+}
+
+// λ_max(B A) for non-symmetric operators (Coulomb slip rows, LU patches), where the Lanczos
+// recurrence above does not apply: Arnoldi on B A in the Euclidean inner product from a random
+// vector (classical Gram–Schmidt, twice), the largest modulus of the Ritz values, with the same
+// steps and safeguard as the Lanczos estimate. The Krylov space is the one Lanczos would build, so
+// it reaches a local top of the spectrum as fast. The power iteration (15 steps, ‖B A v‖/‖v‖) used
+// before did not: on the middle level of the three-level Coulomb Hertz systems λ_max(B A) =
+// 3.62–3.68 was estimated as 2.91–3.61, and at 2.91 the Chebyshev polynomial was 1.18 in modulus
+// there (docs/solvers.md "Contact with the stress multigrid"). Memory: up to 2 × `steps` + 1
+// vectors of the level, during the set-up.
+double largestEigenvalueArnoldi(const PatchSmoother& B, const CrsMatrix& A, int steps)
+{
+  std::vector<Teuchos::RCP<MultiVector>> V;
+  V.push_back(Teuchos::rcp(new MultiVector(A.getDomainMap(), 1)));
+  V[0]->randomize();
+  Teuchos::Array<double> d(1);
+  V[0]->norm2(d());
+  if (!(d[0] > 0.0)) return 1.0;
+  V[0]->scale(1.0 / d[0]);
+  MultiVector w(A.getRangeMap(), 1);
+  const int m = 2 * steps;
+  std::vector<double> H(static_cast<std::size_t>(m + 1) * m, 0.0);  // column-major (m + 1) × m
+  auto h = [&](int i, int j) -> double& { return H[static_cast<std::size_t>(j) * (m + 1) + i]; };
+  int n = 0;
+  double top = 0.0, topBefore = 0.0;
+  for (int j = 0; j < m; ++j) {
+    auto z = Teuchos::rcp(new MultiVector(A.getDomainMap(), 1));
+    A.apply(*V[j], w);
+    B.apply(w, *z, 1.0, 0.0);
+    for (int pass = 0; pass < 2; ++pass)
+      for (int i = 0; i <= j; ++i) {
+        z->dot(*V[i], d());
+        h(i, j) += d[0];
+        z->update(-d[0], *V[i], 1.0);
+      }
+    z->norm2(d());
+    h(j + 1, j) = d[0];
+    n = j + 1;
+    if (n % 5 == 0) {
+      topBefore = top;
+      top = topOfHessenberg(H, m + 1, n);
+      if (n >= steps && !(top > (1.0 + kRitzGrowth) * topBefore)) return top;
+    }
+    if (!(d[0] > 1e-12 * std::abs(h(j, j)))) break;  // an invariant subspace
+    z->scale(1.0 / d[0]);
+    V.push_back(z);
+  }
+  return topOfHessenberg(H, m + 1, n);
 }
 
 // The coarse space of one level under the fine level's constraints (docs/solvers.md "Contact
@@ -725,10 +792,11 @@ Teuchos::RCP<Operator> buildStressMultigrid(const BlockStructure& blocks,
   for (int l = 1; l < L; ++l) {
     auto& lev = mg->levels[l];
     lev.B = std::make_shared<PatchSmoother>(*lev.A, levels[l].patches, symmetric);
-    // 15 Lanczos (symmetric) or power steps estimate λ_max from below; the Chebyshev polynomial
-    // grows outside its interval, so the bound is raised by 10% (Ifpack2's default boost factor).
+    // λ_max from below (Lanczos on symmetric, Arnoldi on non-symmetric systems, at least 15
+    // steps); the Chebyshev polynomial grows outside its interval, so the bound is raised by 10%
+    // (Ifpack2's default boost factor).
     lev.lambdaMax = 1.1 * (symmetric ? largestEigenvalueLanczos(*lev.B, *lev.A, 15)
-                                     : largestEigenvaluePower(*lev.B, *lev.A, 15));
+                                     : largestEigenvalueArnoldi(*lev.B, *lev.A, 15));
     const auto& mine = zoneBlocks[l];
     const int n = core::maxOverRanks(*lev.A->getComm(), static_cast<int>(mine.size()));
     for (int k = 0; k < n; ++k) {
