@@ -232,6 +232,26 @@ TEUCHOS_UNIT_TEST(MeshResources, AutoMultigridContactUsesTheMultigridModel)
                          2.2e6 * (kContactMultigridBytesPerDof3D + 4816.0), 1e-14);
   TEST_ASSERT(!limit.fits(big));
   TEST_FLOATING_EQUALITY(limit.totalBytes(limit.maxElements()), 24e9, 1e-9);
+  // Stored reference (docs/solvers.md "3D contact at 2·10⁶ DOFs"): the peaks, summed over 2
+  // ranks, of input/hertz3d.xml on the 0.255 mesh's uniform cycles with the multigrid, 2026-12-07:
+  // 256 125 DOFs (6 264 tetrahedra) with Restart = 300, 3 540.7 MB (/usr/bin/time -v); 2 014 035
+  // DOFs (50 112 tetrahedra) with Restart = 80, 20 003 MB in the first Newton step (VmRSS every 5
+  // s; the second step's rebuild, two multigrids held at once, passed 21 815 MB and was stopped).
+  // The model, with the program's own 0.22 GB, within 5%.
+  struct Peak {
+    double dofs, elements, restart, mb;
+  };
+  for (const Peak& p : {Peak{256125, 6264, 300, 3540.7}, Peak{2014035, 50112, 80, 20003.0}}) {
+    auto run = makeResourceLimit(24.0, 3, 1, 2, 0, 0.0, "", 0.22e9);
+    run.contact = true;
+    run.multigridFromDofs = 1e5;
+    run.multigridBytesPerDof = kContactMultigridBytesPerDof3D + 8.0 * 2 * (p.restart + 1);
+    const double model = run.totalBytes(p.elements), peak = p.mb * 1048576.0;
+    out << p.dofs << " DOFs, Restart " << p.restart << ": model " << model / 1048576.0
+        << " MB, measured " << p.mb << " MB\n";
+    TEST_FLOATING_EQUALITY(run.dofs(p.elements) / p.dofs, 1.0, 0.05);
+    TEST_FLOATING_EQUALITY(model, peak, 0.05);
+  }
   // A threshold above what fits: MUMPS' range only, bisected.
   small.multigridFromDofs = 5e6;
   TEST_FLOATING_EQUALITY(small.totalBytes(small.maxElements()), 16e9, 1e-6);
