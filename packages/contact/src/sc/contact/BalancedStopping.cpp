@@ -11,6 +11,33 @@
 
 namespace sc::contact {
 
+namespace {
+
+// The solver's own tolerance and residual limit come back however a solve below ends.
+struct RestoreSolverSettings {
+  solvers::LinearSolver& s;
+  double tolerance = s.relativeTolerance(), limit = s.maximumRelativeResidual();
+  ~RestoreSolverSettings()
+  {
+    s.setRelativeTolerance(tolerance);
+    s.setMaximumRelativeResidual(limit);
+  }
+};
+
+// ‖A^{1/2} e_σ‖ of the solver's error estimate e = P⁻¹(rhs − K x); `error` is work space.
+double estimatedAlgebraicError(const solvers::LinearSolver& solver,
+                               const Tpetra::MultiVector<>& rhs, const Tpetra::MultiVector<>& x,
+                               Tpetra::MultiVector<>& error, const Tpetra::CrsMatrix<>& energy,
+                               long long stressDofs)
+{
+  SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
+              "Contact/Newton/Stopping: the solver " << solver.name()
+                                                     << " gives no error estimate");
+  return BalancedStopping::stressEnergyNorm(energy, error, stressDofs);
+}
+
+}  // namespace
+
 BalancedStopping BalancedStopping::fromParameters(const Teuchos::ParameterList& newtonList)
 {
   BalancedStopping s;
@@ -44,18 +71,9 @@ BalancedStopping::Result BalancedStopping::solve(solvers::LinearSolver& solver,
                                                  const Tpetra::CrsMatrix<>& energy,
                                                  long long stressDofs)
 {
-  const double fixedTolerance = solver.relativeTolerance();
-  const double limit = solver.maximumRelativeResidual();
-  // The solver's own settings come back however the solve ends.
-  struct Restore {
-    solvers::LinearSolver& s;
-    double tolerance, limit;
-    ~Restore()
-    {
-      s.setRelativeTolerance(tolerance);
-      s.setMaximumRelativeResidual(limit);
-    }
-  } restore{solver, fixedTolerance, limit};
+  const RestoreSolverSettings restore{solver};
+  const double fixedTolerance = restore.tolerance;
+  const double limit = restore.limit;
 
   const double bound = fraction_ * eta_;
   // The tolerance expected to give half the bound: from the error per unit of relative residual
@@ -74,10 +92,7 @@ BalancedStopping::Result BalancedStopping::solve(solvers::LinearSolver& solver,
     r.iterations += solver.lastSolveStats().iterations;
     r.tolerance = tolerance;
     ++r.stages;
-    SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
-                "Contact/Newton/Stopping = Balanced: the solver " << solver.name()
-                                                                  << " gives no error estimate");
-    r.algebraicError = stressEnergyNorm(energy, error, stressDofs);
+    r.algebraicError = estimatedAlgebraicError(solver, rhs, x, error, energy, stressDofs);
     const double residual = solver.lastSolveStats().relativeResidual;
     if (residual > 0.0) errorPerResidual_ = r.algebraicError / residual;
     if (r.algebraicError <= bound || tolerance <= fixedTolerance) break;
@@ -101,18 +116,12 @@ BalancedStopping::Result BalancedStopping::finalSolve(solvers::LinearSolver& sol
                                                       const Tpetra::CrsMatrix<>& energy,
                                                       long long stressDofs) const
 {
-  const double fixedTolerance = solver.relativeTolerance();
-  struct Restore {
-    solvers::LinearSolver& s;
-    double tolerance;
-    ~Restore() { s.setRelativeTolerance(tolerance); }
-  } restore{solver, fixedTolerance};
+  const RestoreSolverSettings restore{solver};
+  const double fixedTolerance = restore.tolerance;
   const double bound = finalFraction() * eta_;
   Result r;
   Tpetra::MultiVector<> error(x.getMap(), 1), saved(x, Teuchos::Copy);
-  SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
-              "contact Newton: the solver " << solver.name() << " gives no error estimate");
-  r.algebraicError = stressEnergyNorm(energy, error, stressDofs);
+  r.algebraicError = estimatedAlgebraicError(solver, rhs, x, error, energy, stressDofs);
   double residual = solver.lastSolveStats().relativeResidual;
   r.tolerance = fixedTolerance;
   // A relative residual below ~1e-13 is out of reach in double precision.
@@ -134,9 +143,7 @@ BalancedStopping::Result BalancedStopping::finalSolve(solvers::LinearSolver& sol
     r.tolerance = tolerance;
     ++r.stages;
     residual = solver.lastSolveStats().relativeResidual;
-    SC_THROW_IF(!solver.estimateError(rhs, x, error), core::InternalError,
-                "contact Newton: the solver " << solver.name() << " gives no error estimate");
-    r.algebraicError = stressEnergyNorm(energy, error, stressDofs);
+    r.algebraicError = estimatedAlgebraicError(solver, rhs, x, error, energy, stressDofs);
   }
   return r;
 }
